@@ -1,0 +1,32 @@
+/// @file status.h
+/// Status codes: every public query reports one; invalid input is never answered with a number.
+#ifndef PROX_STATUS_H
+#define PROX_STATUS_H
+
+#if defined(PROX_STATIC) || !defined(__GNUC__)
+#define PROX_API
+#else
+#define PROX_API __attribute__((visibility("default")))
+#endif
+
+/// What went wrong, if anything.
+typedef enum prox_status {
+    PROX_OK = 0,              ///< success
+    PROX_EINVAL_NONFINITE,    ///< a coordinate, vector or size is NaN or infinite
+    PROX_EINVAL_RADIUS,       ///< radius is zero or negative
+    PROX_EINVAL_AXIS,         ///< cylinder axis (height vector) has zero length
+    PROX_EINVAL_BOX_EDGE,     ///< a box edge vector has zero length
+    PROX_EINVAL_BOX_ORTHO,    ///< box edge vectors are not mutually orthogonal
+    PROX_EINVAL_RPP_BOUNDS,   ///< RPP has min >= max on some axis
+    PROX_EINVAL_ARG,          ///< a null pointer or an out-of-range argument
+    PROX_EINVAL_SHAPE_KIND,   ///< unknown shape kind in a generic shape
+    PROX_ENUMERIC,            ///< an internal numerical method failed (e.g. GSL's QR did not converge)
+    PROX_ENOMEM,              ///< allocation failed
+    PROX_EUNSUPPORTED,        ///< the query is not implemented for this pair of shapes
+    PROX_STATUS_COUNT_
+} prox_status;
+
+/// A human-readable, static description of a status code.
+PROX_API const char *prox_status_str(prox_status s);
+
+#endif

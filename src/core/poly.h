@@ -1,0 +1,26 @@
+/* Internal: real roots of polynomials of degree <= 8.
+ * All use of gsl_poly_complex_solve in prox goes through prox_poly_real_roots (src/core/poly.c). */
+#ifndef PROX_CORE_POLY_H
+#define PROX_CORE_POLY_H
+
+#include "prox/status.h"
+
+#define PROX_POLY_MAX_DEGREE 8
+
+/* Real roots of sum_{k=0}^{degree} c[k] x^k (c[0] the constant term), degree <= 8.
+ * - Leading coefficients negligible relative to the largest coefficient deflate the degree
+ *   (relative test, never == 0).
+ * - Near-real roots (|imag| small relative to the root's size) are accepted and polished by Newton
+ *   on the original polynomial; a near-double root is kept (reported once or twice, never lost).
+ * - Roots are written to roots[] in increasing order; *count receives how many (<= 8).
+ * - A GSL failure (GSL_EFAILED, QR not converging) becomes PROX_ENUMERIC; nothing allocates.
+ * Quartics and lower use closed forms (no GSL QR); degree 5..8 use GSL's companion-matrix QR. */
+prox_status prox_poly_real_roots(const double *c, int degree, double *roots, int *count);
+
+/* Same, always through gsl_poly_complex_solve (the reference path, for tests and bench). */
+prox_status prox_poly_real_roots_gsl(const double *c, int degree, double *roots, int *count);
+
+/* Evaluates the polynomial and its derivative at x (Horner). */
+double prox_poly_eval(const double *c, int degree, double x, double *deriv);
+
+#endif

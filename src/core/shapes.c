@@ -1,0 +1,98 @@
+/* Shape validators (called at every public entry point) and generic-shape constructors. */
+#include "prox/shapes.h"
+
+static int finite3(prox_vec3 v) { return prox_v3_isfinite(v); }
+
+PROX_API prox_status prox_rcc_validate(const prox_rcc *c)
+{
+    if (!c) return PROX_EINVAL_ARG;
+    if (!finite3(c->base) || !finite3(c->axis) || !isfinite(c->radius)) return PROX_EINVAL_NONFINITE;
+    if (!(c->radius > 0.0)) return PROX_EINVAL_RADIUS;
+    double h = prox_v3_norm(c->axis);
+    if (!(h > 0.0)) return PROX_EINVAL_AXIS;
+    if (!isfinite(h)) return PROX_EINVAL_NONFINITE; /* components finite but the length overflows */
+    return PROX_OK;
+}
+
+PROX_API prox_status prox_box_validate(const prox_box *b)
+{
+    if (!b) return PROX_EINVAL_ARG;
+    if (!finite3(b->corner)) return PROX_EINVAL_NONFINITE;
+    double len[3];
+    for (int i = 0; i < 3; ++i) {
+        if (!finite3(b->edge[i])) return PROX_EINVAL_NONFINITE;
+        len[i] = prox_v3_norm(b->edge[i]);
+        if (!(len[i] > 0.0)) return PROX_EINVAL_BOX_EDGE;
+        if (!isfinite(len[i])) return PROX_EINVAL_NONFINITE;
+    }
+    for (int i = 0; i < 3; ++i) {
+        int j = (i + 1) % 3;
+        /* Relative test on unit vectors so that the product cannot overflow. */
+        prox_vec3 ui = prox_v3_scale(b->edge[i], 1.0 / len[i]);
+        prox_vec3 uj = prox_v3_scale(b->edge[j], 1.0 / len[j]);
+        if (fabs(prox_v3_dot(ui, uj)) > PROX_BOX_ORTHO_TOL) return PROX_EINVAL_BOX_ORTHO;
+    }
+    return PROX_OK;
+}
+
+PROX_API prox_status prox_rpp_validate(const prox_rpp *r)
+{
+    if (!r) return PROX_EINVAL_ARG;
+    const double v[6] = {r->xmin, r->xmax, r->ymin, r->ymax, r->zmin, r->zmax};
+    for (int i = 0; i < 6; ++i)
+        if (!isfinite(v[i])) return PROX_EINVAL_NONFINITE;
+    for (int i = 0; i < 3; ++i)
+        if (!(v[2 * i] < v[2 * i + 1])) return PROX_EINVAL_RPP_BOUNDS;
+    return PROX_OK;
+}
+
+PROX_API prox_status prox_sph_validate(const prox_sph *s)
+{
+    if (!s) return PROX_EINVAL_ARG;
+    if (!finite3(s->center) || !isfinite(s->radius)) return PROX_EINVAL_NONFINITE;
+    if (!(s->radius > 0.0)) return PROX_EINVAL_RADIUS;
+    return PROX_OK;
+}
+
+PROX_API prox_status prox_shape_validate(const prox_shape *s)
+{
+    if (!s) return PROX_EINVAL_ARG;
+    switch (s->kind) {
+    case PROX_SHAPE_RCC: return prox_rcc_validate(&s->u.rcc);
+    case PROX_SHAPE_BOX: return prox_box_validate(&s->u.box);
+    case PROX_SHAPE_RPP: return prox_rpp_validate(&s->u.rpp);
+    case PROX_SHAPE_SPH: return prox_sph_validate(&s->u.sph);
+    }
+    return PROX_EINVAL_SHAPE_KIND;
+}
+
+PROX_API prox_box prox_rpp_to_box(const prox_rpp *r)
+{
+    prox_box b;
+    b.corner = prox_v3(r->xmin, r->ymin, r->zmin);
+    b.edge[0] = prox_v3(r->xmax - r->xmin, 0, 0);
+    b.edge[1] = prox_v3(0, r->ymax - r->ymin, 0);
+    b.edge[2] = prox_v3(0, 0, r->zmax - r->zmin);
+    return b;
+}
+
+PROX_API prox_shape prox_shape_from_rcc(prox_rcc c)
+{
+    prox_shape s = {.kind = PROX_SHAPE_RCC, .u.rcc = c};
+    return s;
+}
+PROX_API prox_shape prox_shape_from_box(prox_box b)
+{
+    prox_shape s = {.kind = PROX_SHAPE_BOX, .u.box = b};
+    return s;
+}
+PROX_API prox_shape prox_shape_from_rpp(prox_rpp r)
+{
+    prox_shape s = {.kind = PROX_SHAPE_RPP, .u.rpp = r};
+    return s;
+}
+PROX_API prox_shape prox_shape_from_sph(prox_sph s0)
+{
+    prox_shape s = {.kind = PROX_SHAPE_SPH, .u.sph = s0};
+    return s;
+}

@@ -1,0 +1,22 @@
+/* Status codes and their messages. */
+#include "prox/status.h"
+
+PROX_API const char *prox_status_str(prox_status s)
+{
+    switch (s) {
+    case PROX_OK: return "ok";
+    case PROX_EINVAL_NONFINITE: return "invalid input: a coordinate, vector or size is NaN or infinite";
+    case PROX_EINVAL_RADIUS: return "invalid input: radius must be positive";
+    case PROX_EINVAL_AXIS: return "invalid input: cylinder axis (height vector) has zero length";
+    case PROX_EINVAL_BOX_EDGE: return "invalid input: a box edge vector has zero length";
+    case PROX_EINVAL_BOX_ORTHO: return "invalid input: box edge vectors are not mutually orthogonal";
+    case PROX_EINVAL_RPP_BOUNDS: return "invalid input: RPP needs min < max on every axis";
+    case PROX_EINVAL_ARG: return "invalid argument: null pointer or value out of range";
+    case PROX_EINVAL_SHAPE_KIND: return "invalid input: unknown shape kind";
+    case PROX_ENUMERIC: return "numerical failure: an internal solver did not converge";
+    case PROX_ENOMEM: return "out of memory";
+    case PROX_EUNSUPPORTED: return "query not supported for this pair of shapes";
+    case PROX_STATUS_COUNT_: break;
+    }
+    return "unknown status code";
+}

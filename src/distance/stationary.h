@@ -1,0 +1,41 @@
+/* Internal: stationary points of primitive-pair distance functions.
+ * The RCC-RCC query (rcc_rcc.c) needs every stationary point, not only the global minimum of a
+ * primitive pair, because a local minimum of one primitive pair can be the global minimum of the
+ * solids while the pair's own global minimum lies outside the finite cylinder. */
+#ifndef PROX_DISTANCE_STATIONARY_H
+#define PROX_DISTANCE_STATIONARY_H
+
+#include "prox/primitives.h"
+
+/* A circle with its frame: point(theta) = c + r (cos theta u + sin theta v); n = u x v. */
+typedef struct prox_fcircle {
+    prox_vec3 c, u, v, n;
+    double r;
+} prox_fcircle;
+
+/* Builds the frame with the same convention as prox_circle_frame (n must be unit). */
+prox_fcircle prox_fcircle_make(prox_vec3 center, prox_vec3 unit_normal, double radius);
+static inline prox_vec3 prox_fcircle_point(const prox_fcircle *c, double th)
+{
+    return prox_v3_add(c->c, prox_v3_add(prox_v3_scale(c->u, c->r * cos(th)), prox_v3_scale(c->v, c->r * sin(th))));
+}
+
+/* Every stationary angle of f(theta) = dist^2(point(theta), line) for the infinite line through p
+ * with unit direction w (Agarwal Sec. 3.3, quartic in tan(theta/2); the angle pi is included when it
+ * is stationary). Angles are polished by Newton on f'(theta) and returned in th[0..count-1], count <= 4.
+ * Returns 1 when f is constant (line along the circle's axis): then count = 0. */
+int prox_circle_line_stationary(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, double th[4], int *count);
+
+/* Every stationary angle theta_a on circle a of g(theta_a) = dist^2(point_a(theta_a), circle b)
+ * (Agarwal Sec. 3.5, degree 8 in tan(theta_a/2), rooted by prox_poly_real_roots; the angle pi is
+ * included when stationary), polished by Newton on the trigonometric form; count <= 8.
+ * The partner on b of a point x is the closest point of b to x (prox_circle_closest_on_b below).
+ * Returns 1 when g is constant on a (coaxial circles, or a lies on b's axis... i.e. degenerate):
+ * then count = 0 and callers treat the contact as a set. Returns a negative prox_status on failure. */
+int prox_circle_circle_stationary(const prox_fcircle *a, const prox_fcircle *b, double th[8], int *count);
+
+/* Closest point of circle b to point x; *degenerate = 1 when x is on b's axis (every point of b is
+ * closest: an arbitrary one is returned). */
+prox_vec3 prox_fcircle_closest(const prox_fcircle *b, prox_vec3 x, int *degenerate);
+
+#endif

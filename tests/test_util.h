@@ -1,0 +1,87 @@
+/* Shared helpers for the cmocka tests: assert_near (Debian's cmocka has no float asserts),
+ * a seeded RNG (xoshiro256**), random rotations, and the GSL handler switch. */
+#ifndef PROX_TEST_UTIL_H
+#define PROX_TEST_UTIL_H
+
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <cmocka.h>
+#include <gsl/gsl_errno.h>
+
+#include "prox/prox.h"
+
+/* Fails with expected, actual and tolerance printed. */
+#define assert_near(actual, expected, tol)                                                         \
+    do {                                                                                           \
+        double a_ = (actual), e_ = (expected), t_ = (tol);                                         \
+        if (!(fabs(a_ - e_) <= t_)) {                                                              \
+            print_error("assert_near failed: actual %.17g expected %.17g |diff| %.3g > tol %.3g\n", \
+                        a_, e_, fabs(a_ - e_), t_);                                                \
+            fail();                                                                                \
+        }                                                                                          \
+    } while (0)
+
+typedef struct test_rng {
+    uint64_t s[4];
+} test_rng;
+
+static inline uint64_t test_rotl(uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
+static inline uint64_t test_rng_next(test_rng *r)
+{
+    uint64_t *s = r->s, res = test_rotl(s[1] * 5, 7) * 9, t = s[1] << 17;
+    s[2] ^= s[0]; s[3] ^= s[1]; s[1] ^= s[2]; s[0] ^= s[3]; s[2] ^= t; s[3] = test_rotl(s[3], 45);
+    return res;
+}
+static inline test_rng test_rng_seed(uint64_t seed)
+{
+    test_rng r;
+    for (int i = 0; i < 4; ++i) { /* splitmix64 */
+        uint64_t z = (seed += 0x9e3779b97f4a7c15ULL);
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+        r.s[i] = z ^ (z >> 31);
+    }
+    return r;
+}
+/* Uniform in [0, 1). */
+static inline double test_uniform(test_rng *r) { return (double)(test_rng_next(r) >> 11) * 0x1.0p-53; }
+/* Uniform in [lo, hi). */
+static inline double test_range(test_rng *r, double lo, double hi) { return lo + (hi - lo) * test_uniform(r); }
+/* Uniform unit vector. */
+static inline prox_vec3 test_unit(test_rng *r)
+{
+    for (;;) {
+        prox_vec3 v = prox_v3(test_range(r, -1, 1), test_range(r, -1, 1), test_range(r, -1, 1));
+        double n = prox_v3_norm(v);
+        if (n > 1e-3 && n <= 1.0) return prox_v3_scale(v, 1.0 / n);
+    }
+}
+/* A uniformly random rotation as a 3x3 matrix (Shoemake quaternion). */
+typedef struct test_rot {
+    double m[3][3];
+} test_rot;
+static inline test_rot test_random_rot(test_rng *r)
+{
+    double u1 = test_uniform(r), u2 = 2 * PROX_PI * test_uniform(r), u3 = 2 * PROX_PI * test_uniform(r);
+    double a = sqrt(1 - u1), b = sqrt(u1);
+    double w = a * sin(u2), x = a * cos(u2), y = b * sin(u3), z = b * cos(u3);
+    test_rot R = {{{1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)},
+                   {2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)},
+                   {2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)}}};
+    return R;
+}
+static inline prox_vec3 test_rot_apply(const test_rot *R, prox_vec3 v)
+{
+    return prox_v3(R->m[0][0] * v.x + R->m[0][1] * v.y + R->m[0][2] * v.z,
+                   R->m[1][0] * v.x + R->m[1][1] * v.y + R->m[1][2] * v.z,
+                   R->m[2][0] * v.x + R->m[2][1] * v.y + R->m[2][2] * v.z);
+}
+
+/* Call first in every test main: the library must never rely on GSL's aborting handler. */
+static inline void test_init(void) { gsl_set_error_handler_off(); }
+
+#endif
