@@ -1,0 +1,246 @@
+/* prox_bench: one benchmark program with a table of named cases (STYLE.md item 8, after Box2D's
+ * benchmark/): the selected groups build their seeded inputs first, then every case is timed.
+ * For each case and each of R >= 5 repeats: one batch pass gives the mean ns/query (total / n), one
+ * pass timing every query on its own (clock overhead subtracted) gives the median and p99 ns/query;
+ * the figure reported for each statistic is its median over the repeats.
+ * Usage: prox_bench [--quick] [--long] [--repeats R] [--filter SUBSTRING] [--csv FILE]
+ *                   [--validation DIR] [--list] */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime, CLOCK_MONOTONIC */
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include <gsl/gsl_errno.h>
+
+#include "bench.h"
+#ifdef PROX_BENCH_HAVE_SCENE
+#include "bench_scene.h"
+#endif
+
+#ifndef PROX_BENCH_VALIDATION_DIR
+#define PROX_BENCH_VALIDATION_DIR "../shared/validation"
+#endif
+
+/* The case table, filled by the groups' setups. */
+static bench_case *g_cases;
+static size_t g_ncases, g_capcases;
+
+bench_case *bench_add(const char *name, bench_query_fn one, const void *data, const size_t *idx, size_t n)
+{
+    if (g_ncases == g_capcases) {
+        g_capcases = g_capcases ? 2 * g_capcases : 64;
+        bench_case *grown = realloc(g_cases, g_capcases * sizeof *g_cases);
+        if (!grown) {
+            fprintf(stderr, "prox_bench: out of memory\n");
+            exit(2);
+        }
+        g_cases = grown;
+    }
+    bench_case *c = &g_cases[g_ncases++];
+    memset(c, 0, sizeof *c);
+    snprintf(c->name, sizeof c->name, "%s", name);
+    c->one = one;
+    c->data = data;
+    c->idx = idx;
+    c->n = n;
+    return c;
+}
+
+void bench_note(bench_case *c, const char *fmt, ...)
+{
+    size_t used = strlen(c->note);
+    if (used && used + 1 < sizeof c->note) c->note[used++] = ';', c->note[used] = '\0';
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(c->note + used, sizeof c->note - used, fmt, ap);
+    va_end(ap);
+}
+
+/* Case-name prefixes of the groups: a filter starting with one sets up that group only. */
+static const char *const g_groups[] = {"poly/", "prim/", "rcc/", "peer/", "stress/", "scene"};
+
+int bench_selected(const bench_opts *o, const char *name)
+{
+    if (!o->filter) return 1;
+    if (strstr(name, o->filter)) return 1;
+    /* a group (or any prefix of a case name) is selected when the filter is more specific than it */
+    if (!strncmp(o->filter, name, strlen(name))) return 1;
+    /* a filter that names no group is a free substring: every group must be set up to find it */
+    for (size_t k = 0; k < sizeof g_groups / sizeof g_groups[0]; ++k)
+        if (!strncmp(o->filter, g_groups[k], strlen(g_groups[k]))) return 0;
+    return 1;
+}
+
+/* Monotonic time in ns. */
+static double now_ns(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1e9 + (double)ts.tv_nsec;
+}
+
+/* Median cost of an empty timed region, subtracted from per-query timings. */
+static double clock_overhead(void)
+{
+    double t[2001];
+    for (int k = 0; k < 2001; ++k) {
+        double a = now_ns();
+        t[k] = now_ns() - a;
+    }
+    return bench_quantile(t, 2001, 0.5);
+}
+
+static volatile double g_sink;
+
+/* One batch pass: mean ns/query. */
+static double time_batch(const bench_case *c)
+{
+    double s = 0.0, t0 = now_ns();
+    for (size_t k = 0; k < c->n; ++k) s += c->one(c->data, c->idx ? c->idx[k] : k);
+    double t1 = now_ns();
+    g_sink = s;
+    return (t1 - t0) / (double)c->n;
+}
+
+/* One pass timing each query alone: fills per[] (ns, overhead removed). */
+static void time_each(const bench_case *c, double *per, double overhead)
+{
+    double s = 0.0;
+    for (size_t k = 0; k < c->n; ++k) {
+        size_t i = c->idx ? c->idx[k] : k;
+        double t0 = now_ns();
+        s += c->one(c->data, i);
+        double dt = now_ns() - t0 - overhead;
+        per[k] = dt > 0.0 ? dt : 0.0;
+    }
+    g_sink = s;
+}
+
+typedef struct case_stats {
+    double mean, median, p99;
+} case_stats;
+
+/* Runs one case: warm-up, then R repeats of a batch pass and a per-query pass. */
+static case_stats run_case(const bench_case *c, int repeats, double overhead)
+{
+    case_stats st = {0, 0, 0};
+    if (c->n == 0) return st;
+    double *per = bench_xmalloc(c->n * sizeof *per);
+    double *means = bench_xmalloc((size_t)repeats * sizeof *means);
+    double *meds = bench_xmalloc((size_t)repeats * sizeof *meds);
+    double *p99s = bench_xmalloc((size_t)repeats * sizeof *p99s);
+    (void)time_batch(c); /* warm-up: caches, branch predictors, lazy GSL state */
+    for (int r = 0; r < repeats; ++r) {
+        means[r] = time_batch(c);
+        time_each(c, per, overhead);
+        meds[r] = bench_quantile(per, c->n, 0.5);
+        p99s[r] = bench_quantile(per, c->n, 0.99);
+    }
+    st.mean = bench_quantile(means, (size_t)repeats, 0.5);
+    st.median = bench_quantile(meds, (size_t)repeats, 0.5);
+    st.p99 = bench_quantile(p99s, (size_t)repeats, 0.5);
+    free(per), free(means), free(meds), free(p99s);
+    return st;
+}
+
+static void usage(void)
+{
+    fprintf(stderr,
+            "usage: prox_bench [--quick] [--long] [--repeats R] [--filter SUBSTRING] [--csv FILE]\n"
+            "                  [--validation DIR] [--list]\n");
+}
+
+/* Prints a double or an empty CSV field when NaN. */
+static void csv_num(FILE *f, double v)
+{
+    if (v == v) fprintf(f, ",%.4g", v);
+    else fputs(",", f);
+}
+
+static void print_header(FILE *csv)
+{
+    printf("%-46s %9s %10s %10s %10s %9s %9s %9s %5s  %s\n", "case", "n", "mean_ns", "median_ns", "p99_ns",
+           "err_max", "err_p99", "wit_max", "mism", "note");
+    if (csv)
+        fprintf(csv, "case,n,repeats,mean_ns,median_ns,p99_ns,err_max,err_p99,err_median,wit_max,mismatches,"
+                     "failures,note\n");
+}
+
+static void print_row(FILE *csv, const bench_case *c, const case_stats *st, int repeats)
+{
+    printf("%-46s %9zu %10.1f %10.1f %10.1f", c->name, c->n, st->mean, st->median, st->p99);
+    if (c->has_acc)
+        printf(" %9.2g %9.2g %9.2g %5ld", c->acc.err_max, c->acc.err_p99, c->acc.wit_max, c->acc.mismatches);
+    else
+        printf(" %9s %9s %9s %5s", "", "", "", "");
+    printf("  %s\n", c->note);
+    fflush(stdout);
+    if (!csv) return;
+    fprintf(csv, "%s,%zu,%d,%.2f,%.2f,%.2f", c->name, c->n, repeats, st->mean, st->median, st->p99);
+    if (c->has_acc) {
+        csv_num(csv, c->acc.err_max), csv_num(csv, c->acc.err_p99), csv_num(csv, c->acc.err_median);
+        csv_num(csv, c->acc.wit_max);
+        fprintf(csv, ",%ld,%ld", c->acc.mismatches, c->acc.failures);
+    } else {
+        fputs(",,,,,,", csv);
+    }
+    fprintf(csv, ",\"%s\"\n", c->note);
+    fflush(csv);
+}
+
+int main(int argc, char **argv)
+{
+    bench_opts o = {0, 0, 7, NULL, PROX_BENCH_VALIDATION_DIR};
+    const char *csv_path = NULL;
+    int list = 0;
+    for (int k = 1; k < argc; ++k) {
+        if (!strcmp(argv[k], "--quick")) o.quick = 1;
+        else if (!strcmp(argv[k], "--long")) o.long_stress = 1;
+        else if (!strcmp(argv[k], "--list")) list = 1;
+        else if (!strcmp(argv[k], "--repeats") && k + 1 < argc) o.repeats = atoi(argv[++k]);
+        else if (!strcmp(argv[k], "--filter") && k + 1 < argc) o.filter = argv[++k];
+        else if (!strcmp(argv[k], "--csv") && k + 1 < argc) csv_path = argv[++k];
+        else if (!strcmp(argv[k], "--validation") && k + 1 < argc) o.validation_dir = argv[++k];
+        else {
+            usage();
+            return 2;
+        }
+    }
+    if (o.repeats < 5) o.repeats = 5; /* the median of at least 5 repeats */
+    gsl_set_error_handler_off();      /* the library must never rely on GSL's aborting handler */
+
+    /* Build every selected input before any timing. */
+    bench_group_poly(&o);
+    bench_group_prim(&o);
+    bench_group_rcc(&o);
+    bench_group_peers(&o);
+    bench_group_stress(&o);
+
+    FILE *csv = NULL;
+    if (csv_path && !(csv = fopen(csv_path, "w"))) {
+        fprintf(stderr, "prox_bench: cannot write %s\n", csv_path);
+        return 2;
+    }
+    double overhead = clock_overhead();
+    printf("# prox_bench: %d repeats, clock overhead %.1f ns subtracted from per-query times%s\n", o.repeats,
+           overhead, o.quick ? ", quick" : "");
+    print_header(csv);
+    for (size_t k = 0; k < g_ncases; ++k) {
+        const bench_case *c = &g_cases[k];
+        if (o.filter && !strstr(c->name, o.filter)) continue;
+        if (list) {
+            printf("%s\n", c->name);
+            continue;
+        }
+        case_stats st = run_case(c, o.repeats, overhead);
+        print_row(csv, c, &st, o.repeats);
+    }
+#ifdef PROX_BENCH_HAVE_SCENE
+    if (!list && bench_selected(&o, "scene")) prox_bench_scene(csv); /* deck's scene bench (own rows) */
+#endif
+    if (csv) fclose(csv);
+    free(g_cases);
+    return 0;
+}
