@@ -1,0 +1,26 @@
+/// @file support.h
+/// Support functions of the four macrobodies and a generic signed distance of two convex shapes
+/// computed from them alone (minimisation of h_A(D) + h_B(-D) over unit directions D).
+#ifndef PROX_SUPPORT_H
+#define PROX_SUPPORT_H
+
+#include "sat.h"
+#include "shapes.h"
+
+/// Support function h(d) = max over x in s of d.x (d need not be unit; h(0) = 0). The shape is not
+/// validated here (hot path): call prox_shape_validate first.
+PROX_API double prox_shape_support(const prox_shape *s, prox_vec3 d);
+/// A point of s attaining prox_shape_support(s, d) (for d = 0: the centre of s).
+PROX_API prox_vec3 prox_shape_support_point(const prox_shape *s, prox_vec3 d);
+/// Centre of symmetry of a shape (all four macrobodies are centrally symmetric).
+PROX_API prox_vec3 prox_shape_center(const prox_shape *s);
+/// Size of a shape used for tolerances: largest edge, height, diameter.
+PROX_API double prox_shape_size(const prox_shape *s);
+
+/// Signed distance of two convex macrobodies from their support functions (any pair of kinds):
+/// sd = -min over unit D of [h_A(D) + h_B(-D)]; > 0 is the distance, <= 0 minus the penetration depth.
+/// normal is the minimising D (from A towards B), p1 in A, p2 in B with p2 - p1 = sd * normal
+/// (up to the stated tolerance on degenerate, face-like contacts).
+PROX_API prox_signed_result prox_shape_signed_distance_support(const prox_shape *a, const prox_shape *b);
+
+#endif

@@ -1,0 +1,392 @@
+/* Support-function engine: signed distance of two centrally symmetric convex bodies.
+ *
+ * Source: the projection formulation of Eberly, "Intersection of Cylinders", Secs. 3-4, Eq. (4)
+ * (support function of a cylinder) and Eq. (6) (the combined separation function f(D)), turned from
+ * a sign test into an optimisation: with phi(D) = h_A(D) + h_B(-D),
+ *     disjoint:     distance = max_{|D|<=1} -phi(D)   (duality: distance from Delta to K = A_c + B_c)
+ *     overlapping:  depth    = min_{|D|=1}   phi(D)   (distance from Delta to the boundary of K)
+ * and in both cases sd = -min_{|D|=1} phi(D). Every evaluated unit D gives a valid bound (a lower
+ * bound on the distance, an upper bound on the depth); the search tries to make it tight.
+ *
+ * phi is piecewise smooth on the sphere. Its kinks are the great circles D.w = 0 ("ridges": w a
+ * cylinder axis or a box edge, where |D.w| is not differentiable) and the isolated points D = +-W of
+ * a cylinder axis ("cones", where |P D| is not differentiable). A minimiser lies on a stratum:
+ *   0-dim: a cone point or the crossing of two ridges (face normals, W_A x W_B, ...): evaluated;
+ *   1-dim: on one ridge: sampled, then safeguarded Newton on the angle;
+ *   2-dim: inside a cell: Riemannian Newton on the sphere with backtracking.
+ * Disjoint pairs have a quasi-convex problem (sublevel sets of phi/|D| below 0 are convex cones),
+ * so a local minimum is global; overlapping pairs are not (a small body deep in a big one has one
+ * local minimum per face), hence the global sampling of all strata. */
+#include "sup_engine.h"
+
+#include <float.h>
+
+#define SUP_TOPK 4
+#define SUP_RIDGE_SAMPLES 16
+#define SUP_FACE_TOL 1e-9 /* |sin| below which a near-face/near-line support set is treated as one */
+
+/* ---- single bodies ---------------------------------------------------------------------- */
+
+sup_body sup_body_make(const prox_shape *s)
+{
+    sup_body b = {0};
+    switch (s->kind) {
+    case PROX_SHAPE_RCC: {
+        const prox_rcc *c = &s->u.rcc;
+        double h = prox_v3_norm(c->axis);
+        b.kind = SUP_CYL;
+        b.w = prox_v3_scale(c->axis, 1.0 / h);
+        b.c = prox_v3_mad(c->base, 0.5, c->axis);
+        b.r = c->radius;
+        b.hh = 0.5 * h;
+        b.size = h > 2.0 * c->radius ? h : 2.0 * c->radius;
+        break;
+    }
+    case PROX_SHAPE_BOX:
+    case PROX_SHAPE_RPP: {
+        prox_box bx = s->kind == PROX_SHAPE_BOX ? s->u.box : prox_rpp_to_box(&s->u.rpp);
+        b.kind = SUP_BOX;
+        b.c = bx.corner;
+        for (int i = 0; i < 3; ++i) {
+            double l = prox_v3_norm(bx.edge[i]);
+            b.e[i] = prox_v3_scale(bx.edge[i], 1.0 / l);
+            b.ext[i] = 0.5 * l;
+            b.c = prox_v3_mad(b.c, 0.5, bx.edge[i]);
+            if (l > b.size) b.size = l;
+        }
+        break;
+    }
+    case PROX_SHAPE_SPH:
+        b.kind = SUP_SPH;
+        b.c = s->u.sph.center;
+        b.r = s->u.sph.radius;
+        b.size = 2.0 * b.r;
+        break;
+    }
+    return b;
+}
+
+double sup_hc(const sup_body *b, prox_vec3 d)
+{
+    switch (b->kind) {
+    case SUP_CYL: {
+        double dw = prox_v3_dot(d, b->w);
+        return b->r * prox_v3_norm(prox_v3_mad(d, -dw, b->w)) + b->hh * fabs(dw);
+    }
+    case SUP_BOX:
+        return b->ext[0] * fabs(prox_v3_dot(d, b->e[0])) + b->ext[1] * fabs(prox_v3_dot(d, b->e[1])) +
+               b->ext[2] * fabs(prox_v3_dot(d, b->e[2]));
+    default: return b->r * prox_v3_norm(d);
+    }
+}
+
+static double sgn(double x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0); }
+
+prox_vec3 sup_pc(const sup_body *b, prox_vec3 d)
+{
+    switch (b->kind) {
+    case SUP_CYL: {
+        double dw = prox_v3_dot(d, b->w);
+        prox_vec3 p = prox_v3_scale(b->w, b->hh * sgn(dw));
+        prox_vec3 perp = prox_v3_mad(d, -dw, b->w);
+        double n = prox_v3_norm(perp);
+        return n > 0.0 ? prox_v3_mad(p, b->r / n, perp) : p;
+    }
+    case SUP_BOX: {
+        prox_vec3 p = prox_v3(0, 0, 0);
+        for (int i = 0; i < 3; ++i) p = prox_v3_mad(p, b->ext[i] * sgn(prox_v3_dot(d, b->e[i])), b->e[i]);
+        return p;
+    }
+    default: {
+        double n = prox_v3_norm(d);
+        return n > 0.0 ? prox_v3_scale(d, b->r / n) : d;
+    }
+    }
+}
+
+/* Hessian of hc at d applied to v (zero for a box; defined off the kinks). */
+static prox_vec3 sup_hess(const sup_body *b, prox_vec3 d, prox_vec3 v)
+{
+    if (b->kind == SUP_CYL) {
+        double dw = prox_v3_dot(d, b->w);
+        prox_vec3 perp = prox_v3_mad(d, -dw, b->w);
+        double n = prox_v3_norm(perp);
+        if (!(n > 0.0)) return prox_v3(0, 0, 0);
+        prox_vec3 p = prox_v3_scale(perp, 1.0 / n);
+        prox_vec3 x = prox_v3_mad(prox_v3_mad(v, -prox_v3_dot(v, b->w), b->w), -prox_v3_dot(v, p), p);
+        return prox_v3_scale(x, b->r / n);
+    }
+    if (b->kind == SUP_SPH) {
+        double n = prox_v3_norm(d);
+        prox_vec3 u = prox_v3_scale(d, 1.0 / n);
+        return prox_v3_scale(prox_v3_mad(v, -prox_v3_dot(v, u), u), b->r / n);
+    }
+    return prox_v3(0, 0, 0);
+}
+
+/* Ridge normals and cone axes of a body. */
+static int sup_ridges(const sup_body *b, prox_vec3 out[3])
+{
+    if (b->kind == SUP_CYL) { out[0] = b->w; return 1; }
+    if (b->kind == SUP_BOX) { out[0] = b->e[0]; out[1] = b->e[1]; out[2] = b->e[2]; return 3; }
+    return 0;
+}
+
+/* ---- the pair search ---------------------------------------------------------------------- */
+
+typedef struct sup_search {
+    const sup_body *a, *b;
+    prox_vec3 delta;
+    double best_phi;
+    prox_vec3 best_d;
+    int nk;                      /* top-k distinct starts for the cell search */
+    double kphi[SUP_TOPK];
+    prox_vec3 kd[SUP_TOPK];
+} sup_search;
+
+static double phi_eval(const sup_search *s, prox_vec3 d)
+{
+    return sup_hc(s->a, d) + sup_hc(s->b, d) - prox_v3_dot(d, s->delta);
+}
+/* Gradient of phi: support point of K minus Delta (a subgradient on the kinks). */
+static prox_vec3 phi_grad(const sup_search *s, prox_vec3 d)
+{
+    return prox_v3_sub(prox_v3_add(sup_pc(s->a, d), sup_pc(s->b, d)), s->delta);
+}
+static prox_vec3 phi_hess(const sup_search *s, prox_vec3 d, prox_vec3 v)
+{
+    return prox_v3_add(sup_hess(s->a, d, v), sup_hess(s->b, d, v));
+}
+
+/* Records a unit direction with its value: global best and the list of distinct good starts. */
+static void record(sup_search *s, prox_vec3 d, double f)
+{
+    if (f < s->best_phi) { s->best_phi = f; s->best_d = d; }
+    for (int i = 0; i < s->nk; ++i)
+        if (prox_v3_dot(d, s->kd[i]) > 1.0 - 1e-8) {
+            if (f < s->kphi[i]) { s->kphi[i] = f; s->kd[i] = d; }
+            return;
+        }
+    int slot = s->nk < SUP_TOPK ? s->nk++ : -1;
+    if (slot < 0) { /* replace the worst if better */
+        slot = 0;
+        for (int i = 1; i < SUP_TOPK; ++i)
+            if (s->kphi[i] > s->kphi[slot]) slot = i;
+        if (!(f < s->kphi[slot])) return;
+    }
+    s->kphi[slot] = f;
+    s->kd[slot] = d;
+}
+
+static double consider(sup_search *s, prox_vec3 d)
+{
+    double n = prox_v3_norm(d);
+    if (!(n > 0.0)) return INFINITY;
+    d = prox_v3_scale(d, 1.0 / n);
+    double f = phi_eval(s, d);
+    record(s, d, f);
+    return f;
+}
+
+/* 0-dim strata: cone points +-W and crossings +-(w_i x w_j) of ridges of both bodies. */
+static void search_points(sup_search *s)
+{
+    prox_vec3 r[6];
+    int n = sup_ridges(s->a, r);
+    n += sup_ridges(s->b, r + n);
+    for (int i = 0; i < n; ++i)
+        for (int j = i + 1; j < n; ++j) {
+            prox_vec3 x = prox_v3_cross(r[i], r[j]);
+            if (prox_v3_norm(x) < 1e-12) continue; /* parallel ridges: the 1-dim search covers it */
+            consider(s, x);
+            consider(s, prox_v3_neg(x));
+        }
+    const sup_body *bs[2] = {s->a, s->b};
+    for (int k = 0; k < 2; ++k)
+        if (bs[k]->kind == SUP_CYL) {
+            consider(s, bs[k]->w);
+            consider(s, prox_v3_neg(bs[k]->w));
+        }
+    if (prox_v3_norm(s->delta) > 0.0) {
+        consider(s, s->delta);
+        consider(s, prox_v3_neg(s->delta));
+    }
+}
+
+/* Safeguarded Newton on phi(theta) along the great circle cos(th) u + sin(th) v in [lo, hi]. */
+static void ridge_refine(sup_search *s, prox_vec3 u, prox_vec3 v, double lo, double hi, double th)
+{
+    for (int it = 0; it < 80; ++it) {
+        double c = cos(th), sn = sin(th);
+        prox_vec3 d = prox_v3_add(prox_v3_scale(u, c), prox_v3_scale(v, sn));
+        prox_vec3 dt = prox_v3_add(prox_v3_scale(u, -sn), prox_v3_scale(v, c));
+        double f = phi_eval(s, d);
+        record(s, d, f);
+        double g1 = prox_v3_dot(phi_grad(s, d), dt);
+        double g2 = prox_v3_dot(dt, phi_hess(s, d, dt)) - f;
+        if (g1 > 0.0) hi = th; else if (g1 < 0.0) lo = th; else return;
+        double tn = g2 > 0.0 ? th - g1 / g2 : 0.5 * (lo + hi);
+        if (!(tn > lo && tn < hi)) tn = 0.5 * (lo + hi);
+        if (fabs(tn - th) <= 1e-15 * (1.0 + fabs(th)) || hi - lo <= 1e-14) return;
+        th = tn;
+    }
+}
+
+/* 1-dim strata: each ridge circle, sampled, every discrete local minimum refined. */
+static void search_ridge(sup_search *s, prox_vec3 w)
+{
+    prox_vec3 u = prox_v3_any_perp(w), v = prox_v3_cross(w, u);
+    double f[SUP_RIDGE_SAMPLES];
+    const double step = 2.0 * PROX_PI / SUP_RIDGE_SAMPLES;
+    for (int k = 0; k < SUP_RIDGE_SAMPLES; ++k)
+        f[k] = consider(s, prox_v3_add(prox_v3_scale(u, cos(k * step)), prox_v3_scale(v, sin(k * step))));
+    for (int k = 0; k < SUP_RIDGE_SAMPLES; ++k) {
+        double fp = f[(k + SUP_RIDGE_SAMPLES - 1) % SUP_RIDGE_SAMPLES], fn = f[(k + 1) % SUP_RIDGE_SAMPLES];
+        if (f[k] <= fp && f[k] <= fn) ridge_refine(s, u, v, (k - 1) * step, (k + 1) * step, k * step);
+    }
+}
+
+/* 2-dim strata: Riemannian Newton on the unit sphere from d, with backtracking on phi. The
+ * Riemannian Hessian of a degree-1 homogeneous phi is T^T H T - phi I on the tangent plane T. */
+static void cell_newton(sup_search *s, prox_vec3 d)
+{
+    double f = phi_eval(s, d);
+    for (int it = 0; it < 40; ++it) {
+        prox_vec3 t1 = prox_v3_any_perp(d), t2 = prox_v3_cross(d, t1);
+        prox_vec3 g = phi_grad(s, d);
+        double g1 = prox_v3_dot(g, t1), g2 = prox_v3_dot(g, t2);
+        prox_vec3 h1 = phi_hess(s, d, t1), h2 = phi_hess(s, d, t2);
+        double a = prox_v3_dot(t1, h1) - f, b = prox_v3_dot(t1, h2), c = prox_v3_dot(t2, h2) - f;
+        double det = a * c - b * b, x1, x2;
+        if (a > 0.0 && det > 0.0) {
+            x1 = -(c * g1 - b * g2) / det;
+            x2 = -(a * g2 - b * g1) / det;
+        } else { /* not locally convex: steepest descent, length scaled by |phi| or the scale */
+            double gn = hypot(g1, g2), sc = fabs(f) > 0.0 ? fabs(f) : 1.0;
+            if (!(gn > 0.0)) return;
+            x1 = -g1 / sc;
+            x2 = -g2 / sc;
+        }
+        double len = hypot(x1, x2);
+        if (len > 0.5) { x1 *= 0.5 / len; x2 *= 0.5 / len; len = 0.5; }
+        int accepted = 0;
+        for (int ls = 0; ls < 40 && len > 1e-16; ++ls) {
+            prox_vec3 dn = prox_v3_normalize(prox_v3_add(d, prox_v3_add(prox_v3_scale(t1, x1), prox_v3_scale(t2, x2))));
+            double fn = phi_eval(s, dn);
+            if (fn < f) { d = dn; f = fn; accepted = 1; break; }
+            x1 *= 0.5; x2 *= 0.5; len *= 0.5;
+        }
+        if (!accepted) break;
+        record(s, d, f);
+        if (len < 1e-15) break;
+    }
+}
+
+/* Fixed global samples: the 26 directions of the cube's faces, edges and corners. */
+static void search_samples(sup_search *s)
+{
+    for (int i = -1; i <= 1; ++i)
+        for (int j = -1; j <= 1; ++j)
+            for (int k = -1; k <= 1; ++k)
+                if (i || j || k) consider(s, prox_v3(i, j, k));
+}
+
+/* ---- witness points ------------------------------------------------------------------------ */
+
+/* A support set: point (dim 0), segment (dim 1: c +- s0 e0), disk (c, normal n, radius rad) or
+ * rectangle (c + x e0 + y e1, |x| <= s0, |y| <= s1). */
+typedef struct sup_face {
+    int dim, disk;
+    prox_vec3 c, e0, e1, n;
+    double s0, s1, rad;
+} sup_face;
+
+static double clampd(double x, double m) { return x < -m ? -m : (x > m ? m : x); }
+
+/* Support set of body b in unit direction d (absolute position), near-faces included. */
+static sup_face face_of(const sup_body *b, prox_vec3 d)
+{
+    sup_face f = {0};
+    if (b->kind == SUP_CYL) {
+        double dw = prox_v3_dot(d, b->w);
+        prox_vec3 perp = prox_v3_mad(d, -dw, b->w);
+        double pn = prox_v3_norm(perp);
+        if (pn <= SUP_FACE_TOL) {
+            f.dim = 2; f.disk = 1; f.n = b->w; f.rad = b->r;
+            f.c = prox_v3_mad(b->c, dw >= 0.0 ? b->hh : -b->hh, b->w);
+        } else if (fabs(dw) <= SUP_FACE_TOL) {
+            f.dim = 1; f.e0 = b->w; f.s0 = b->hh;
+            f.c = prox_v3_mad(b->c, b->r / pn, perp);
+        } else f.c = prox_v3_add(b->c, sup_pc(b, d));
+        return f;
+    }
+    f.c = b->c;
+    if (b->kind == SUP_SPH) { f.c = prox_v3_mad(b->c, b->r, d); return f; }
+    for (int i = 0; i < 3; ++i) {
+        double di = prox_v3_dot(d, b->e[i]);
+        if (fabs(di) <= SUP_FACE_TOL && f.dim < 2) {
+            if (f.dim == 0) { f.e0 = b->e[i]; f.s0 = b->ext[i]; }
+            else { f.e1 = b->e[i]; f.s1 = b->ext[i]; }
+            f.dim++;
+        } else f.c = prox_v3_mad(f.c, di >= 0.0 ? b->ext[i] : -b->ext[i], b->e[i]);
+    }
+    return f;
+}
+
+/* Nearest point of a support set to x. */
+static prox_vec3 face_proj(const sup_face *f, prox_vec3 x)
+{
+    prox_vec3 r = prox_v3_sub(x, f->c);
+    if (f->dim == 0) return f->c;
+    if (f->disk) {
+        prox_vec3 q = prox_v3_mad(r, -prox_v3_dot(r, f->n), f->n);
+        double qn = prox_v3_norm(q);
+        if (qn > f->rad) q = prox_v3_scale(q, f->rad / qn);
+        return prox_v3_add(f->c, q);
+    }
+    prox_vec3 p = prox_v3_mad(f->c, clampd(prox_v3_dot(r, f->e0), f->s0), f->e0);
+    if (f->dim == 2) p = prox_v3_mad(p, clampd(prox_v3_dot(r, f->e1), f->s1), f->e1);
+    return p;
+}
+
+/* Witness points for the minimising direction n: p1 in the support set of A in n, p2 in that of B
+ * in -n, with p2 - p1 as close to sd n as the sets allow (alternating projections). */
+static void witnesses(const sup_body *a, const sup_body *b, prox_vec3 n, double sd, prox_vec3 *p1, prox_vec3 *p2)
+{
+    sup_face fa = face_of(a, n), fb = face_of(b, prox_v3_neg(n));
+    prox_vec3 x = fa.c, y = face_proj(&fb, prox_v3_mad(x, sd, n));
+    if (fa.dim > 0 && fb.dim > 0)
+        for (int it = 0; it < 64; ++it) {
+            prox_vec3 xn = face_proj(&fa, prox_v3_mad(y, -sd, n));
+            prox_vec3 yn = face_proj(&fb, prox_v3_mad(xn, sd, n));
+            double mv = prox_v3_dist(xn, x) + prox_v3_dist(yn, y);
+            x = xn; y = yn;
+            if (mv == 0.0) break;
+        }
+    *p1 = x;
+    *p2 = y;
+}
+
+prox_signed_result sup_signed_distance(const sup_body *a, const sup_body *b)
+{
+    sup_search s = {.a = a, .b = b, .delta = prox_v3_sub(b->c, a->c), .best_phi = INFINITY};
+    s.best_d = prox_v3(0, 0, 1);
+    search_points(&s);
+    prox_vec3 r[6];
+    int n = sup_ridges(a, r);
+    n += sup_ridges(b, r + n);
+    for (int i = 0; i < n; ++i) search_ridge(&s, r[i]);
+    search_samples(&s);
+    prox_vec3 starts[SUP_TOPK];
+    int ns = s.nk;
+    for (int i = 0; i < ns; ++i) starts[i] = s.kd[i];
+    for (int i = 0; i < ns; ++i) cell_newton(&s, starts[i]);
+    cell_newton(&s, s.best_d);
+
+    prox_signed_result res = {0};
+    res.status = PROX_OK;
+    res.sd = -s.best_phi;
+    res.normal = s.best_d;
+    witnesses(a, b, s.best_d, res.sd, &res.p1, &res.p2);
+    return res;
+}

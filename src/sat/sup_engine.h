@@ -1,0 +1,34 @@
+/* Internal: the support-function engine shared by the SAT verdict, the signed distance of any two
+ * macrobodies and the cross-check. Every macrobody is centrally symmetric, so a shape is kept as
+ * its centre c plus a centred support function hc(d) = h(d) - d.c with hc(-d) = hc(d). For a pair,
+ * phi(D) = h_A(D) + h_B(-D) = hcA(D) + hcB(D) - D.Delta, Delta = cB - cA, and sd = -min_{|D|=1} phi. */
+#ifndef PROX_SAT_SUP_ENGINE_H
+#define PROX_SAT_SUP_ENGINE_H
+
+#include "prox/sat.h"
+#include "prox/shapes.h"
+
+enum { SUP_CYL = 0, SUP_BOX = 1, SUP_SPH = 2 };
+
+/* A macrobody in centred form. */
+typedef struct sup_body {
+    int kind;
+    prox_vec3 c;          /* centre */
+    prox_vec3 w;          /* cylinder: unit axis */
+    double r, hh;         /* cylinder: radius, half height; sphere: r = radius */
+    prox_vec3 e[3];       /* box: unit edges */
+    double ext[3];        /* box: half extents */
+    double size;          /* largest dimension (tolerance scale) */
+} sup_body;
+
+/* Centred form of a valid shape. */
+sup_body sup_body_make(const prox_shape *s);
+/* Centred support function hc(d) (d need not be unit). */
+double sup_hc(const sup_body *b, prox_vec3 d);
+/* Centred support point: a point x of (body - c) with d.x = hc(d); sign(0) picks the face centre. */
+prox_vec3 sup_pc(const sup_body *b, prox_vec3 d);
+
+/* Signed distance of two bodies (see the file comment); status is always PROX_OK. */
+prox_signed_result sup_signed_distance(const sup_body *a, const sup_body *b);
+
+#endif
