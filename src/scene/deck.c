@@ -1,0 +1,796 @@
+/* MCNP input deck reader: surface block -> prox_shape bodies in the global frame.
+ * Follows the MCNP6 user manual (LA-CP-13-00634), Ch. 3: input format (Sec. 3.1: message block,
+ * title card, blank-line delimiters, comment cards, `$` comments, continuation by 5 leading blanks
+ * or `&`, the shorthands nR nI xM nJ nILOG), surface cards (Sec. 3.2.2: "j n A list", j optionally
+ * prefixed by * or +, n > 0 a TRn number, n < 0 a periodic partner), sphere surfaces SO S SX SY SZ
+ * (Table 3-4), macrobodies RPP BOX SPH RCC (Sec. 3.2.2.4), and the TRn card (Sec. 3.3.1.7): the point
+ * r' written on a surface card lies at r = O + B r' (M = 1) or r = B (r' - O) (M = -1), where the
+ * columns of B are the auxiliary axes x', y', z' in main coordinates: (B1 B2 B3) = (xx' yx' zx') etc.
+ * With *TRn the B entries are angles in degrees. Patterns read: 0 entries of B (identity), 6 (x' and
+ * y' axes; z' = x' cross y'), 9 (all). MCNP's other short patterns are reported as errors. B must be
+ * orthonormal within 1e-3 (MCNP's own tolerance); it is then re-orthonormalised (Gram-Schmidt). */
+#include <ctype.h>
+#include <errno.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "prox/deck.h"
+
+#define DECK_MAX_ENTRIES 64 /* more entries than any card read here can take */
+
+/* ---- growable arrays ------------------------------------------------------------------------ */
+
+/* Grows *arr (element size sz) so that it can hold n + 1 elements. 0 on success. */
+static int grow(void **arr, size_t *cap, size_t n, size_t sz)
+{
+    if (n < *cap) return 0;
+    size_t nc = *cap ? 2 * *cap : 16;
+    void *p = realloc(*arr, nc * sz);
+    if (!p) return -1;
+    *arr = p;
+    *cap = nc;
+    return 0;
+}
+
+/* A logical card: its text with continuations joined, and the line it starts on. */
+typedef struct card {
+    int line;
+    char *text;
+    size_t len, cap;
+} card;
+
+/* A surface card parsed up to its entries; placed once every TRn is known. */
+typedef struct pending_surface {
+    long surface;
+    int line;
+    char card[8];
+    long tr;
+    double v[DECK_MAX_ENTRIES];
+    size_t nv;
+} pending_surface;
+
+/* A TRn card turned into a map r -> o + R r'. */
+typedef struct transform {
+    long n;
+    int line;
+    double o[3];
+    double R[3][3]; /* R[i][j]: main component i of auxiliary axis j */
+    int identity;   /* R is exactly the identity */
+} transform;
+
+/* Everything the parser keeps while reading. */
+typedef struct parser {
+    prox_deck *deck;
+    size_t cap_bodies, cap_errors, cap_unsup;
+    pending_surface *surf;
+    size_t nsurf, cap_surf;
+    transform *tr;
+    size_t ntr, cap_tr;
+    int nomem;
+} parser;
+
+/* Adds a note (error or unsupported card) with printf-style text. */
+static void add_note(parser *p, int unsupported, int line, const char *fmt, ...)
+{
+    prox_deck *d = p->deck;
+    prox_deck_note **arr = unsupported ? &d->unsupported : &d->errors;
+    size_t *n = unsupported ? &d->nunsupported : &d->nerrors;
+    size_t *cap = unsupported ? &p->cap_unsup : &p->cap_errors;
+    if (grow((void **)arr, cap, *n, sizeof **arr)) {
+        p->nomem = 1;
+        return;
+    }
+    prox_deck_note *note = &(*arr)[(*n)++];
+    note->line = line;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(note->text, sizeof note->text, fmt, ap);
+    va_end(ap);
+}
+
+/* ---- lexical helpers ------------------------------------------------------------------------ */
+
+/* Case-insensitive equality of two NUL-terminated strings. */
+static int ieq(const char *a, const char *b)
+{
+    for (; *a && *b; ++a, ++b)
+        if (tolower((unsigned char)*a) != tolower((unsigned char)*b)) return 0;
+    return *a == *b;
+}
+
+/* Reads a decimal integer with optional sign; the whole string must be consumed. 0 on success. */
+static int parse_long(const char *s, long *out)
+{
+    const char *q = s;
+    if (*q == '+' || *q == '-') ++q;
+    if (!isdigit((unsigned char)*q)) return -1;
+    for (; *q; ++q)
+        if (!isdigit((unsigned char)*q)) return -1;
+    errno = 0;
+    long v = strtol(s, NULL, 10);
+    if (errno == ERANGE) return -1;
+    *out = v;
+    return 0;
+}
+
+/* Length of the MCNP number at the start of s: [+-] digits [. digits] | [+-] . digits, then an
+ * optional exponent [eEdD][+-]digits. 0 when s does not start with such a number. Inf, NaN, hex and
+ * Fortran exponents without a letter (1.5-3) are not numbers here. */
+static size_t number_length(const char *s)
+{
+    size_t i = 0, digits = 0;
+    if (s[i] == '+' || s[i] == '-') ++i;
+    while (isdigit((unsigned char)s[i])) ++i, ++digits;
+    if (s[i] == '.') {
+        ++i;
+        while (isdigit((unsigned char)s[i])) ++i, ++digits;
+    }
+    if (!digits) return 0;
+    if (s[i] == 'e' || s[i] == 'E' || s[i] == 'd' || s[i] == 'D') {
+        size_t j = i + 1;
+        if (s[j] == '+' || s[j] == '-') ++j;
+        if (!isdigit((unsigned char)s[j])) return i; /* "2d" etc: the letter is not an exponent */
+        while (isdigit((unsigned char)s[j])) ++j;
+        i = j;
+    }
+    return i;
+}
+
+/* Converts the first len characters of s (a valid number_length prefix) to a double. */
+static int convert_number(const char *s, size_t len, double *out)
+{
+    char buf[64];
+    if (len >= sizeof buf) return -1;
+    for (size_t i = 0; i < len; ++i) buf[i] = (s[i] == 'd' || s[i] == 'D') ? 'e' : s[i];
+    buf[len] = 0;
+    double v = strtod(buf, NULL);
+    if (!isfinite(v)) return -1;
+    *out = v;
+    return 0;
+}
+
+/* A whole token as a number. 0 on success. */
+static int parse_number(const char *s, double *out)
+{
+    size_t n = number_length(s);
+    if (!n || s[n]) return -1;
+    return convert_number(s, n, out);
+}
+
+/* Splits text in place on blanks; returns the number of tokens (at most max). */
+static size_t tokenize(char *text, char **tok, size_t max)
+{
+    size_t n = 0;
+    char *s = text;
+    while (*s && n < max) {
+        while (*s && isspace((unsigned char)*s)) ++s;
+        if (!*s) break;
+        tok[n++] = s;
+        while (*s && !isspace((unsigned char)*s)) ++s;
+        if (*s) *s++ = 0;
+    }
+    return n;
+}
+
+/* ---- entries with the nR nI xM nILOG shorthands --------------------------------------------- */
+
+/* Reads the optional repeat count in front of a shorthand letter sequence `suffix` (e.g. "3R" ->
+ * 3, "R" -> 1). Returns 1 when tok is that shorthand, 0 when not, -1 when the count is bad. */
+static int shorthand_count(const char *tok, const char *suffix, long *count)
+{
+    size_t lt = strlen(tok), ls = strlen(suffix);
+    if (lt < ls || !ieq(tok + lt - ls, suffix)) return 0;
+    if (lt == ls) {
+        *count = 1;
+        return 1;
+    }
+    char buf[32];
+    if (lt - ls >= sizeof buf) return -1;
+    memcpy(buf, tok, lt - ls);
+    buf[lt - ls] = 0;
+    for (size_t i = 0; buf[i]; ++i)
+        if (!isdigit((unsigned char)buf[i])) return 0; /* not a count: maybe xM or a bad token */
+    long c;
+    if (parse_long(buf, &c) || c < 1) return -1;
+    *count = c;
+    return 1;
+}
+
+/* Expands the entries tok[0..n) into v; on failure writes the reason to err and returns -1. */
+static int expand_entries(char **tok, size_t n, double *v, size_t *nv, char *err, size_t errsz)
+{
+    size_t k = 0;
+    long interp = 0;  /* pending nI / nILOG count */
+    int interp_log = 0;
+    for (size_t i = 0; i < n; ++i) {
+        const char *t = tok[i];
+        double x;
+        long c;
+        int r;
+        if (!parse_number(t, &x)) {
+            if (interp) {
+                double a = v[k - 1];
+                if (interp_log && !(a > 0 && x > 0)) {
+                    snprintf(err, errsz, "'%ldILOG' needs positive neighbours", interp);
+                    return -1;
+                }
+                if (k + (size_t)interp > DECK_MAX_ENTRIES) goto too_many;
+                for (long j = 1; j <= interp; ++j) {
+                    double f = (double)j / (double)(interp + 1);
+                    v[k++] = interp_log ? exp(log(a) + f * (log(x) - log(a))) : a + f * (x - a);
+                }
+                interp = 0;
+            }
+            if (k >= DECK_MAX_ENTRIES) goto too_many;
+            v[k++] = x;
+            continue;
+        }
+        if (interp) {
+            snprintf(err, errsz, "interpolation must be followed by a number, not '%s'", t);
+            return -1;
+        }
+        if ((r = shorthand_count(t, "ILOG", &c)) != 0) {
+            if (r < 0 || !k) goto bad_shorthand;
+            interp = c, interp_log = 1;
+        } else if ((r = shorthand_count(t, "R", &c)) != 0) {
+            if (r < 0 || !k) goto bad_shorthand;
+            if (k + (size_t)c > DECK_MAX_ENTRIES) goto too_many;
+            for (long j = 0; j < c; ++j, ++k) v[k] = v[k - 1];
+        } else if ((r = shorthand_count(t, "I", &c)) != 0) {
+            if (r < 0 || !k) goto bad_shorthand;
+            interp = c, interp_log = 0;
+        } else if ((r = shorthand_count(t, "J", &c)) != 0) {
+            snprintf(err, errsz, "'%s' (jump to default values) is not supported: these entries have no defaults", t);
+            return -1;
+        } else {
+            size_t len = number_length(t);
+            if (len && (t[len] == 'm' || t[len] == 'M') && !t[len + 1] && k) {
+                if (convert_number(t, len, &x)) goto bad_number;
+                if (k >= DECK_MAX_ENTRIES) goto too_many;
+                v[k] = x * v[k - 1];
+                ++k;
+                continue;
+            }
+            goto bad_number;
+        }
+        continue;
+    bad_shorthand:
+        snprintf(err, errsz, "shorthand '%s' %s", t, r < 0 ? "has a bad count" : "has no preceding entry");
+        return -1;
+    bad_number:
+        snprintf(err, errsz, "'%s' is not a number", t);
+        return -1;
+    }
+    if (interp) {
+        snprintf(err, errsz, "interpolation at the end of the card has no following entry");
+        return -1;
+    }
+    *nv = k;
+    return 0;
+too_many:
+    snprintf(err, errsz, "more than %d entries", DECK_MAX_ENTRIES);
+    return -1;
+}
+
+/* ---- surface cards ---------------------------------------------------------------------------- */
+
+/* Number of entries each supported mnemonic takes; 0 for a mnemonic not read here. */
+static size_t entries_of(const char *mn)
+{
+    static const struct {
+        const char *name;
+        size_t n;
+    } known[] = {{"RCC", 7}, {"BOX", 12}, {"RPP", 6}, {"SPH", 4}, {"SO", 1},
+                 {"S", 4},   {"SX", 2},   {"SY", 2},  {"SZ", 2}};
+    for (size_t i = 0; i < sizeof known / sizeof known[0]; ++i)
+        if (ieq(mn, known[i].name)) return known[i].n;
+    return 0;
+}
+
+/* Parses "j [n] A list" and queues it (or records the error / unsupported card). */
+static void surface_card(parser *p, char *text, int line)
+{
+    char *tok[DECK_MAX_ENTRIES + 4];
+    size_t nt = tokenize(text, tok, sizeof tok / sizeof tok[0]);
+    if (nt == sizeof tok / sizeof tok[0]) {
+        add_note(p, 0, line, "surface card has too many entries");
+        return;
+    }
+    const char *js = tok[0];
+    if (*js == '*' || *js == '+') ++js;
+    long j, n = 0;
+    if (parse_long(js, &j) || j < 1 || *js == '+' || *js == '-') {
+        add_note(p, 0, line, "surface number '%s' is not a positive integer", tok[0]);
+        return;
+    }
+    size_t k = 1;
+    if (k < nt && !parse_long(tok[k], &n)) ++k;
+    if (k >= nt) {
+        add_note(p, 0, line, "surface %ld has no mnemonic", j);
+        return;
+    }
+    char mn[8];
+    size_t ml = strlen(tok[k]);
+    for (size_t i = 0; i < sizeof mn - 1 && i < ml; ++i) mn[i] = (char)toupper((unsigned char)tok[k][i]);
+    mn[ml < sizeof mn - 1 ? ml : sizeof mn - 1] = 0;
+    size_t want = entries_of(mn);
+    if (!want) {
+        if (!isalpha((unsigned char)tok[k][0]))
+            add_note(p, 0, line, "surface %ld: '%s' is not a surface mnemonic", j, tok[k]);
+        else
+            add_note(p, 1, line, "%ld %s", j, mn);
+        return;
+    }
+    if (n < 0) {
+        add_note(p, 0, line, "surface %ld: periodic partner %ld is meaningless for %s", j, -n, mn);
+        return;
+    }
+    for (size_t i = 0; i < p->nsurf; ++i)
+        if (p->surf[i].surface == j) {
+            add_note(p, 0, line, "surface %ld is already defined on line %d", j, p->surf[i].line);
+            return;
+        }
+    if (grow((void **)&p->surf, &p->cap_surf, p->nsurf, sizeof *p->surf)) {
+        p->nomem = 1;
+        return;
+    }
+    pending_surface *s = &p->surf[p->nsurf];
+    char err[PROX_DECK_TEXT - 40];
+    if (expand_entries(tok + k + 1, nt - k - 1, s->v, &s->nv, err, sizeof err)) {
+        add_note(p, 0, line, "surface %ld %s: %s", j, mn, err);
+        return;
+    }
+    if (s->nv != want) {
+        add_note(p, 0, line, "surface %ld %s: needs %zu entries, has %zu", j, mn, want, s->nv);
+        return;
+    }
+    s->surface = j, s->line = line, s->tr = n;
+    memcpy(s->card, mn, sizeof s->card);
+    p->nsurf++;
+}
+
+/* ---- TRn cards -------------------------------------------------------------------------------- */
+
+/* cos of an angle in degrees, exact at multiples of 90. */
+static double cos_deg(double a)
+{
+    double r = fmod(a, 360.0);
+    if (r < 0) r += 360.0;
+    if (r == 0.0) return 1.0;
+    if (r == 90.0 || r == 270.0) return 0.0;
+    if (r == 180.0) return -1.0;
+    return cos(r * (PROX_PI / 180.0));
+}
+
+/* Checks that the columns of R are orthonormal within 1e-3 and re-orthonormalises them in place
+ * (x' normalised, y' made orthogonal to x', z' = +-(x' cross y') with the sign of the given z'). */
+static int orthonormalize(double R[3][3])
+{
+    prox_vec3 c[3];
+    for (int j = 0; j < 3; ++j) c[j] = prox_v3(R[0][j], R[1][j], R[2][j]);
+    for (int j = 0; j < 3; ++j) {
+        if (fabs(prox_v3_norm(c[j]) - 1.0) > 1e-3) return -1;
+        if (fabs(prox_v3_dot(c[j], c[(j + 1) % 3])) > 1e-3) return -1;
+    }
+    prox_vec3 x = prox_v3_normalize(c[0]);
+    prox_vec3 y = prox_v3_normalize(prox_v3_reject(c[1], x));
+    prox_vec3 z = prox_v3_cross(x, y);
+    if (prox_v3_dot(z, c[2]) < 0) z = prox_v3_neg(z);
+    c[0] = x, c[1] = y, c[2] = z;
+    for (int j = 0; j < 3; ++j) R[0][j] = c[j].x, R[1][j] = c[j].y, R[2][j] = c[j].z;
+    return 0;
+}
+
+/* Parses a TRn / *TRn card (tok[0] is its name). */
+static void tr_card(parser *p, char **tok, size_t nt, int line)
+{
+    const char *name = tok[0];
+    int degrees = *name == '*';
+    long n;
+    if (parse_long(name + degrees + 2, &n) || n < 1 || !isdigit((unsigned char)name[degrees + 2])) {
+        add_note(p, 0, line, "'%s': transformation number must be a positive integer", name);
+        return;
+    }
+    for (size_t i = 0; i < p->ntr; ++i)
+        if (p->tr[i].n == n) {
+            add_note(p, 0, line, "TR%ld is already defined on line %d", n, p->tr[i].line);
+            return;
+        }
+    double v[DECK_MAX_ENTRIES];
+    size_t nv;
+    char err[PROX_DECK_TEXT - 40];
+    if (expand_entries(tok + 1, nt - 1, v, &nv, err, sizeof err)) {
+        add_note(p, 0, line, "TR%ld: %s", n, err);
+        return;
+    }
+    if (nv != 3 && nv != 9 && nv != 12 && nv != 13) {
+        add_note(p, 0, line,
+                 "TR%ld: %zu entries; prox reads 3 (displacement), 9 (and x', y' axes), 12 (full matrix) "
+                 "or 13 (and M)", n, nv);
+        return;
+    }
+    transform t = {.n = n, .line = line, .o = {v[0], v[1], v[2]}, .identity = nv == 3};
+    double R[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (size_t e = 3; e < nv && e < 12; ++e) {
+        size_t col = (e - 3) / 3, row = (e - 3) % 3;
+        R[row][col] = degrees ? cos_deg(v[e]) : v[e];
+    }
+    if (nv == 9) { /* z' = x' cross y' */
+        prox_vec3 z = prox_v3_cross(prox_v3(R[0][0], R[1][0], R[2][0]), prox_v3(R[0][1], R[1][1], R[2][1]));
+        R[0][2] = z.x, R[1][2] = z.y, R[2][2] = z.z;
+    }
+    if (nv > 3 && orthonormalize(R)) {
+        add_note(p, 0, line, "TR%ld: rotation matrix is not orthonormal within 1e-3", n);
+        return;
+    }
+    double m = nv == 13 ? v[12] : 1.0;
+    if (m != 1.0 && m != -1.0) {
+        add_note(p, 0, line, "TR%ld: M must be 1 or -1, not %g", n, m);
+        return;
+    }
+    memcpy(t.R, R, sizeof R);
+    if (m < 0) { /* O is the main origin in auxiliary coordinates: r = R (r' - O) = R r' - R O */
+        double o2[3];
+        for (int i = 0; i < 3; ++i) o2[i] = -(R[i][0] * t.o[0] + R[i][1] * t.o[1] + R[i][2] * t.o[2]);
+        memcpy(t.o, o2, sizeof o2);
+    }
+    if (!t.identity) {
+        t.identity = 1;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) t.identity &= R[i][j] == (i == j ? 1.0 : 0.0);
+    }
+    if (grow((void **)&p->tr, &p->cap_tr, p->ntr, sizeof *p->tr)) {
+        p->nomem = 1;
+        return;
+    }
+    p->tr[p->ntr++] = t;
+}
+
+/* ---- placing bodies --------------------------------------------------------------------------- */
+
+static prox_vec3 tr_vec(const transform *t, prox_vec3 v)
+{
+    if (!t || t->identity) return v;
+    return prox_v3(t->R[0][0] * v.x + t->R[0][1] * v.y + t->R[0][2] * v.z,
+                   t->R[1][0] * v.x + t->R[1][1] * v.y + t->R[1][2] * v.z,
+                   t->R[2][0] * v.x + t->R[2][1] * v.y + t->R[2][2] * v.z);
+}
+static prox_vec3 tr_point(const transform *t, prox_vec3 v)
+{
+    if (!t) return v;
+    return prox_v3_add(prox_v3(t->o[0], t->o[1], t->o[2]), tr_vec(t, v));
+}
+
+/* 1 when every column of R is a signed unit axis: an RPP stays an RPP. */
+static int axis_permutation(const transform *t)
+{
+    if (!t || t->identity) return 1;
+    for (int j = 0; j < 3; ++j) {
+        int ones = 0, zeros = 0;
+        for (int i = 0; i < 3; ++i) ones += fabs(t->R[i][j]) == 1.0, zeros += t->R[i][j] == 0.0;
+        if (ones != 1 || zeros != 2) return 0;
+    }
+    return 1;
+}
+
+/* The solid of a pending surface in the global frame. */
+static prox_shape place(const pending_surface *s, const transform *t)
+{
+    const double *v = s->v;
+    const char *c = s->card;
+    prox_sph sph = {prox_v3(0, 0, 0), 0};
+    if (!strcmp(c, "RCC")) {
+        prox_rcc r = {tr_point(t, prox_v3(v[0], v[1], v[2])), tr_vec(t, prox_v3(v[3], v[4], v[5])), v[6]};
+        return prox_shape_from_rcc(r);
+    }
+    if (!strcmp(c, "BOX")) {
+        prox_box b = {tr_point(t, prox_v3(v[0], v[1], v[2])),
+                      {tr_vec(t, prox_v3(v[3], v[4], v[5])), tr_vec(t, prox_v3(v[6], v[7], v[8])),
+                       tr_vec(t, prox_v3(v[9], v[10], v[11]))}};
+        return prox_shape_from_box(b);
+    }
+    if (!strcmp(c, "RPP")) {
+        prox_rpp r = {v[0], v[1], v[2], v[3], v[4], v[5]};
+        if (!axis_permutation(t)) {
+            prox_box b = prox_rpp_to_box(&r);
+            b.corner = tr_point(t, b.corner);
+            for (int i = 0; i < 3; ++i) b.edge[i] = tr_vec(t, b.edge[i]);
+            return prox_shape_from_box(b);
+        }
+        if (prox_rpp_validate(&r) != PROX_OK) return prox_shape_from_rpp(r); /* reported by caller */
+        prox_vec3 a = tr_point(t, prox_v3(r.xmin, r.ymin, r.zmin)), b = tr_point(t, prox_v3(r.xmax, r.ymax, r.zmax));
+        prox_rpp q = {fmin(a.x, b.x), fmax(a.x, b.x), fmin(a.y, b.y), fmax(a.y, b.y), fmin(a.z, b.z), fmax(a.z, b.z)};
+        return prox_shape_from_rpp(q);
+    }
+    if (!strcmp(c, "SPH") || !strcmp(c, "S")) sph = (prox_sph){prox_v3(v[0], v[1], v[2]), v[3]};
+    else if (!strcmp(c, "SO")) sph.radius = v[0];
+    else if (!strcmp(c, "SX")) sph = (prox_sph){prox_v3(v[0], 0, 0), v[1]};
+    else if (!strcmp(c, "SY")) sph = (prox_sph){prox_v3(0, v[0], 0), v[1]};
+    else sph = (prox_sph){prox_v3(0, 0, v[0]), v[1]}; /* SZ */
+    sph.center = tr_point(t, sph.center);
+    return prox_shape_from_sph(sph);
+}
+
+/* Validates the shape of a pending surface in its own frame, then places it. */
+static void resolve_surface(parser *p, const pending_surface *s)
+{
+    const transform *t = NULL;
+    if (s->tr) {
+        for (size_t i = 0; i < p->ntr; ++i)
+            if (p->tr[i].n == s->tr) t = &p->tr[i];
+        if (!t) {
+            add_note(p, 0, s->line, "surface %ld: transformation TR%ld is not defined", s->surface, s->tr);
+            return;
+        }
+    }
+    prox_shape local = place(s, NULL);
+    prox_status st = prox_shape_validate(&local);
+    if (st == PROX_OK) {
+        local = place(s, t);
+        st = prox_shape_validate(&local);
+    }
+    if (st != PROX_OK) {
+        add_note(p, 0, s->line, "surface %ld %s: %s", s->surface, s->card, prox_status_str(st));
+        return;
+    }
+    prox_deck *d = p->deck;
+    if (grow((void **)&d->bodies, &p->cap_bodies, d->nbodies, sizeof *d->bodies)) {
+        p->nomem = 1;
+        return;
+    }
+    prox_deck_body *b = &d->bodies[d->nbodies++];
+    b->surface = s->surface;
+    b->line = s->line;
+    memcpy(b->card, s->card, sizeof b->card);
+    b->tr = s->tr;
+    b->shape = local;
+}
+
+/* ---- cell and data cards ---------------------------------------------------------------------- */
+
+/* Cell placements (FILL, TRCL, LAT) move or replicate surfaces: reported, since bodies here are in
+ * the frame of their surface card. The cell's Boolean geometry itself is not needed. */
+static void cell_card(parser *p, char *text, int line)
+{
+    for (char *s = text; *s; ++s)
+        if (*s == '=' || *s == '(' || *s == ')' || *s == ':') *s = ' ';
+    char *tok[512];
+    size_t nt = tokenize(text, tok, 512);
+    for (size_t i = 1; i < nt; ++i) {
+        const char *t = tok[i][0] == '*' ? tok[i] + 1 : tok[i];
+        if (ieq(t, "fill") || ieq(t, "trcl") || ieq(t, "lat")) {
+            add_note(p, 1, line, "cell %s %s (bodies are reported in their surface card's frame)", tok[0], tok[i]);
+            return;
+        }
+    }
+}
+
+/* A data card: only TRn / *TRn matter. */
+static void data_card(parser *p, char *text, int line)
+{
+    char *tok[DECK_MAX_ENTRIES + 4];
+    size_t nt = tokenize(text, tok, sizeof tok / sizeof tok[0]);
+    if (!nt) return;
+    const char *name = tok[0] + (tok[0][0] == '*');
+    if (strlen(name) > 2 && tolower((unsigned char)name[0]) == 't' && tolower((unsigned char)name[1]) == 'r' &&
+        (isdigit((unsigned char)name[2]) || name[2] == '-' || name[2] == '+')) {
+        if (nt == sizeof tok / sizeof tok[0]) {
+            add_note(p, 0, line, "'%s': too many entries", tok[0]);
+            return;
+        }
+        tr_card(p, tok, nt, line);
+    }
+}
+
+/* ---- lines, cards and blocks ------------------------------------------------------------------ */
+
+enum block { B_MESSAGE, B_TITLE, B_CELLS, B_SURFACES, B_DATA, B_DONE };
+
+/* Appends n characters (and a separating blank) to a card. */
+static int card_append(card *c, const char *s, size_t n)
+{
+    if (c->len + n + 2 > c->cap) {
+        size_t nc = (c->len + n + 2) * 2;
+        char *q = realloc(c->text, nc);
+        if (!q) return -1;
+        c->text = q, c->cap = nc;
+    }
+    c->text[c->len++] = ' ';
+    memcpy(c->text + c->len, s, n);
+    c->len += n;
+    c->text[c->len] = 0;
+    return 0;
+}
+
+/* Hands a finished card to the block's reader. */
+static void flush_card(parser *p, card *c, int block)
+{
+    if (c->line && c->len) {
+        if (block == B_CELLS) cell_card(p, c->text, c->line);
+        else if (block == B_SURFACES) surface_card(p, c->text, c->line);
+        else if (block == B_DATA) data_card(p, c->text, c->line);
+    }
+    c->line = 0, c->len = 0;
+    if (c->text) c->text[0] = 0;
+}
+
+/* 1 when the line is a comment card: 'c' in columns 1-5 after blanks only, then a blank or the end. */
+static int is_comment(const char *s, size_t n)
+{
+    size_t i = 0;
+    while (i < n && i < 5 && s[i] == ' ') ++i;
+    if (i >= n || i >= 5 || (s[i] != 'c' && s[i] != 'C')) return 0;
+    return i + 1 == n || isspace((unsigned char)s[i + 1]);
+}
+
+/* Copies one physical line with tabs expanded (stops of 8) and the CR of CRLF dropped. */
+static size_t expand_line(const char *s, size_t n, char *out, size_t cap)
+{
+    size_t k = 0;
+    for (size_t i = 0; i < n && k + 9 < cap; ++i) {
+        if (s[i] == '\r' && i + 1 == n) break;
+        if (s[i] == '\t') {
+            do out[k++] = ' ';
+            while (k % 8);
+        } else out[k++] = s[i] == '\r' ? ' ' : s[i];
+    }
+    out[k] = 0;
+    return k;
+}
+
+/* Feeds one non-blank, non-comment line of a card block. */
+static int feed_line(parser *p, card *c, int *amp, char *s, size_t n, int line, int block)
+{
+    char *dollar = memchr(s, '$', n);
+    if (dollar) n = (size_t)(dollar - s);
+    while (n && isspace((unsigned char)s[n - 1])) --n;
+    int cont_amp = n && s[n - 1] == '&';
+    if (cont_amp) --n;
+    int leading = 0;
+    while (leading < 5 && (size_t)leading < n && s[leading] == ' ') ++leading;
+    int continuation = *amp || (leading == 5 || (size_t)leading == n);
+    if (continuation && !c->line) {
+        if (!*amp && n == 0 && dollar) return 0; /* a line holding only a `$` comment */
+        add_note(p, 0, line, "continuation line with no card to continue");
+        *amp = cont_amp;
+        return 0;
+    }
+    if (!continuation) {
+        flush_card(p, c, block);
+        c->line = line;
+    }
+    *amp = cont_amp;
+    return card_append(c, s, n);
+}
+
+/* Splits the text into lines and blocks and reads every card. */
+static void read_blocks(parser *p, const char *text)
+{
+    int block = B_MESSAGE, line = 0, amp = 0, in_message = 0;
+    card c = {0};
+    size_t cap = 256;
+    char *buf = malloc(cap);
+    if (!buf) {
+        p->nomem = 1;
+        return;
+    }
+    for (const char *s = text; *s && block != B_DONE && !p->nomem;) {
+        const char *e = strchr(s, '\n');
+        size_t n = e ? (size_t)(e - s) : strlen(s);
+        ++line;
+        if (8 * n + 16 > cap) {
+            cap = 8 * n + 16;
+            char *q = realloc(buf, cap);
+            if (!q) {
+                p->nomem = 1;
+                break;
+            }
+            buf = q;
+        }
+        size_t m = expand_line(s, n, buf, cap);
+        s = e ? e + 1 : s + n;
+        size_t first = 0;
+        while (first < m && isspace((unsigned char)buf[first])) ++first;
+        int blank = first == m;
+        if (block == B_MESSAGE) { /* an optional message block ends at the first blank line */
+            char low[9] = {0};
+            for (size_t i = 0; i < 8 && first + i < m; ++i) low[i] = (char)tolower((unsigned char)buf[first + i]);
+            if (strcmp(low, "message:")) block = B_TITLE;
+            else {
+                in_message = 1;
+                block = B_TITLE;
+                continue;
+            }
+        }
+        if (in_message) {
+            in_message = !blank;
+            continue;
+        }
+        if (block == B_TITLE) {
+            snprintf(p->deck->title, sizeof p->deck->title, "%.*s", (int)(m - first), buf + first);
+            block = B_CELLS;
+            continue;
+        }
+        if (blank) {
+            if (amp) add_note(p, 0, line, "'&' continues a card into a blank line");
+            flush_card(p, &c, block);
+            amp = 0;
+            ++block;
+            continue;
+        }
+        if (is_comment(buf, m)) continue;
+        if (feed_line(p, &c, &amp, buf, m, line, block)) p->nomem = 1;
+    }
+    if (block != B_DONE) flush_card(p, &c, block);
+    if (block < B_SURFACES && !p->nomem)
+        add_note(p, 0, 0, "the deck ends before its surface block (a blank line must follow the cell cards)");
+    free(c.text);
+    free(buf);
+}
+
+/* ---- public API -------------------------------------------------------------------------------- */
+
+PROX_API prox_status prox_deck_parse(const char *text, prox_deck *deck)
+{
+    if (!text || !deck) return PROX_EINVAL_ARG;
+    parser p = {.deck = deck};
+    read_blocks(&p, text);
+    for (size_t i = 0; i < p.nsurf && !p.nomem; ++i) resolve_surface(&p, &p.surf[i]);
+    free(p.surf);
+    free(p.tr);
+    return p.nomem ? PROX_ENOMEM : PROX_OK;
+}
+
+PROX_API prox_status prox_deck_read_file(const char *path, prox_deck *deck)
+{
+    if (!path || !deck) return PROX_EINVAL_ARG;
+    FILE *f = fopen(path, "rb");
+    char *text = NULL;
+    size_t n = 0, cap = 0;
+    if (f) {
+        for (;;) {
+            if (cap - n < 65536) {
+                size_t nc = cap ? 2 * cap : 131072;
+                char *q = realloc(text, nc);
+                if (!q) {
+                    fclose(f);
+                    free(text);
+                    return PROX_ENOMEM;
+                }
+                text = q, cap = nc;
+            }
+            size_t got = fread(text + n, 1, cap - n - 1, f);
+            n += got;
+            if (got == 0) break;
+        }
+        int bad = ferror(f);
+        fclose(f);
+        if (bad) free(text), text = NULL;
+    }
+    if (!text) {
+        parser p = {.deck = deck};
+        add_note(&p, 0, 0, "cannot read '%s'", path);
+        return p.nomem ? PROX_ENOMEM : PROX_OK;
+    }
+    text[n] = 0;
+    if (memchr(text, 0, n)) {
+        parser p = {.deck = deck};
+        add_note(&p, 0, 0, "'%s' holds NUL bytes: not a text deck", path);
+        free(text);
+        return PROX_OK;
+    }
+    prox_status st = prox_deck_parse(text, deck);
+    free(text);
+    return st;
+}
+
+PROX_API void prox_deck_free(prox_deck *deck)
+{
+    if (!deck) return;
+    free(deck->bodies);
+    free(deck->errors);
+    free(deck->unsupported);
+    memset(deck, 0, sizeof *deck);
+}
