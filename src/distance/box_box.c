@@ -1,0 +1,236 @@
+/* BOX-BOX: separating-axis verdict, exact distance and proximal points, exact penetration depth.
+ * Replaces the TRX report's Sec. 3.1 (LA-UR-13-26757, Eqs. (19)-(41): the 12 edge lines of B against the
+ * 6 face planes of A), which misses B wholly inside A, A inside B, and crossings where only A's edges
+ * pierce B; its Eq. (39) also divides by a_Ak + a_Ak~ b_Ak (typo for the 2x2 determinant).
+ * Verdict and depth: the 15 candidate axes (3 + 3 face normals, 9 edge cross products); the minimum
+ * overlap over them is the exact penetration depth, since the Minkowski difference of two boxes has
+ * only these facet normals. Distance: the closest pair of two disjoint convex polytopes can be chosen
+ * vertex-solid or edge-edge, so min over 16 point-box and 144 segment-segment distances is exact. */
+#include "distance/box_internal.h"
+
+/* Overlap of the projections of A and B on the unit axis L (negative: separated along L). */
+static double axis_overlap(const prox_bframe *A, const prox_bframe *B, prox_vec3 L)
+{
+    double ra = 0.0, rb = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        ra += A->h[k] * fabs(prox_v3_dot(A->a[k], L));
+        rb += B->h[k] * fabs(prox_v3_dot(B->a[k], L));
+    }
+    return ra + rb - fabs(prox_v3_dot(prox_v3_sub(B->m, A->m), L));
+}
+
+/* Candidate axis i of 15: 0-2 A's normals, 3-5 B's, 6-14 a_i x b_j. Returns 0 for a null cross product. */
+static int sat_axis(const prox_bframe *A, const prox_bframe *B, int i, prox_vec3 *L)
+{
+    if (i < 3) *L = A->a[i];
+    else if (i < 6) *L = B->a[i - 3];
+    else {
+        prox_vec3 c = prox_v3_cross(A->a[(i - 6) / 3], B->a[(i - 6) % 3]);
+        double n = prox_v3_norm(c);
+        if (!(n > 1e-300)) return 0; /* parallel edges: covered by the face normals */
+        *L = prox_v3_scale(c, 1.0 / n);
+    }
+    return 1;
+}
+
+/* Minimum overlap over the 15 axes and the axis achieving it (oriented from A towards B). */
+static double sat_min_overlap(const prox_bframe *A, const prox_bframe *B, int *best_i, prox_vec3 *best_L)
+{
+    double best = INFINITY;
+    for (int i = 0; i < 15; ++i) {
+        prox_vec3 L;
+        if (!sat_axis(A, B, i, &L)) continue;
+        double o = axis_overlap(A, B, L);
+        if (o < best) {
+            best = o;
+            *best_i = i;
+            *best_L = prox_v3_dot(prox_v3_sub(B->m, A->m), L) >= 0.0 ? L : prox_v3_neg(L);
+        }
+    }
+    return best;
+}
+
+static double bb_scale(const prox_bframe *A, const prox_bframe *B)
+{
+    double s = prox_v3_dist(A->m, B->m), sa = prox_bframe_size(A), sb = prox_bframe_size(B);
+    return s > sa ? (s > sb ? s : sb) : (sa > sb ? sa : sb);
+}
+
+PROX_API prox_test_result prox_box_box_test(const prox_box *a, const prox_box *b)
+{
+    prox_test_result r = {0};
+    r.status = prox_box_validate(a);
+    if (r.status == PROX_OK) r.status = prox_box_validate(b);
+    if (r.status != PROX_OK) return r;
+    prox_bframe A = prox_bframe_make(a), B = prox_bframe_make(b);
+    int i = 0;
+    prox_vec3 L = {0, 0, 0};
+    r.intersect = sat_min_overlap(&A, &B, &i, &L) >= -PROX_QUERY_REL_TOL * bb_scale(&A, &B);
+    return r;
+}
+
+/* Minimum over the vertex-box and edge-edge features: the distance of disjoint boxes. */
+static double feature_distance(const prox_bframe *A, const prox_bframe *B, prox_vec3 *p1, prox_vec3 *p2)
+{
+    double best = INFINITY, d;
+    for (int i = 0; i < 8; ++i) {
+        prox_vec3 v = prox_bframe_vertex(A, i), q = prox_bframe_closest(B, v, &d);
+        if (d < best) best = d, *p1 = v, *p2 = q;
+        v = prox_bframe_vertex(B, i);
+        q = prox_bframe_closest(A, v, &d);
+        if (d < best) best = d, *p1 = q, *p2 = v;
+    }
+    for (int i = 0; i < 12; ++i) {
+        prox_vec3 pa, qa, c1, c2;
+        prox_bframe_edge(A, i, &pa, &qa);
+        for (int j = 0; j < 12; ++j) {
+            prox_vec3 pb, qb;
+            prox_bframe_edge(B, j, &pb, &qb);
+            d = prox_seg_seg(pa, qa, pb, qb, &c1, &c2);
+            if (d < best) best = d, *p1 = c1, *p2 = c2;
+        }
+    }
+    return best;
+}
+
+/* A common point of two intersecting boxes: some edge of one meets the other (a vertex of the
+ * intersection polytope lies on an edge of A or of B). Returns 0 when none is found within tol. */
+static int common_point(const prox_bframe *A, const prox_bframe *B, double tol, prox_vec3 *x)
+{
+    for (int pass = 0; pass < 2; ++pass) {
+        const prox_bframe *E = pass ? B : A, *S = pass ? A : B;
+        for (int j = 0; j < 12; ++j) {
+            prox_vec3 p, q;
+            double s0, s1;
+            prox_bframe_edge(E, j, &p, &q);
+            if (prox_bframe_clip_segment(S, p, q, tol, &s0, &s1)) {
+                *x = prox_v3_mad(p, 0.5 * (s0 + s1), prox_v3_sub(q, p));
+                return 1;
+            }
+        }
+    }
+    return 0;
+}
+
+PROX_API prox_distance_result prox_box_box_distance(const prox_box *a, const prox_box *b)
+{
+    prox_distance_result r = {0};
+    r.status = prox_box_validate(a);
+    if (r.status == PROX_OK) r.status = prox_box_validate(b);
+    if (r.status != PROX_OK) return r;
+    prox_bframe A = prox_bframe_make(a), B = prox_bframe_make(b);
+    int i = 0;
+    prox_vec3 L = {0, 0, 0};
+    double tol = PROX_QUERY_REL_TOL * bb_scale(&A, &B);
+    double o = sat_min_overlap(&A, &B, &i, &L);
+    if (o >= 0.0) { /* no separating axis: the boxes intersect */
+        r.intersect = 1;
+        if (!common_point(&A, &B, tol, &r.p1)) feature_distance(&A, &B, &r.p1, &r.p2);
+        r.p2 = r.p1;
+        return r;
+    }
+    r.distance = feature_distance(&A, &B, &r.p1, &r.p2);
+    prox_vec3 n = r.distance > 0.0 ? prox_v3_scale(prox_v3_sub(r.p2, r.p1), 1.0 / r.distance) : L;
+    r.certificate_gap = -prox_bframe_support(&B, prox_v3_neg(n)) - prox_bframe_support(&A, n);
+    return r;
+}
+
+/* Vertices of the support feature of F in direction n (vertex, edge or face, in cyclic order). */
+static int support_feature(const prox_bframe *F, prox_vec3 n, prox_vec3 out[4])
+{
+    double l[3];
+    int free_k[2], nf = 0;
+    for (int k = 0; k < 3; ++k) {
+        double c = prox_v3_dot(n, F->a[k]);
+        if (fabs(c) <= 1e-12) {
+            if (nf < 2) free_k[nf++] = k;
+            l[k] = 0.0;
+        } else l[k] = c > 0.0 ? F->h[k] : -F->h[k];
+    }
+    static const int cyc[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    int count = nf == 0 ? 1 : (nf == 1 ? 2 : 4);
+    for (int v = 0; v < count; ++v) {
+        if (nf >= 1) l[free_k[0]] = (nf == 1 ? (v ? 1 : -1) : cyc[v][0]) * F->h[free_k[0]];
+        if (nf == 2) l[free_k[1]] = cyc[v][1] * F->h[free_k[1]];
+        out[v] = prox_bframe_point(F, l);
+    }
+    return count;
+}
+
+/* Sutherland-Hodgman: keeps the part of the convex polygon with a.x <= c. */
+static int clip_poly(prox_vec3 *poly, int n, prox_vec3 a, double c)
+{
+    prox_vec3 out[8];
+    int m = 0;
+    for (int i = 0; i < n; ++i) {
+        prox_vec3 p = poly[i], q = poly[(i + 1) % n];
+        double dp = prox_v3_dot(a, p) - c, dq = prox_v3_dot(a, q) - c;
+        if (dp <= 0.0) out[m++] = p;
+        if ((dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0))
+            out[m++] = prox_v3_mad(p, dp / (dp - dq), prox_v3_sub(q, p));
+        if (m >= 8) break;
+    }
+    for (int i = 0; i < m; ++i) poly[i] = out[i];
+    return m;
+}
+
+/* Witness on the feature of S (support in direction dir) that lies under the face k of F: the
+ * feature clipped by F's side slabs, averaged. */
+static prox_vec3 face_witness(const prox_bframe *F, int k, const prox_bframe *S, prox_vec3 dir)
+{
+    prox_vec3 poly[8];
+    int n = support_feature(S, dir, poly);
+    prox_vec3 avg0 = {0, 0, 0};
+    for (int i = 0; i < n; ++i) avg0 = prox_v3_mad(avg0, 1.0 / n, poly[i]);
+    for (int j = 0; j < 3 && n > 0; ++j) {
+        if (j == k) continue;
+        double c = prox_v3_dot(F->a[j], F->m);
+        n = clip_poly(poly, n, F->a[j], c + F->h[j]);
+        if (n > 0) n = clip_poly(poly, n, prox_v3_neg(F->a[j]), F->h[j] - c);
+    }
+    if (n == 0) return avg0;
+    prox_vec3 avg = {0, 0, 0};
+    for (int i = 0; i < n; ++i) avg = prox_v3_mad(avg, 1.0 / n, poly[i]);
+    return avg;
+}
+
+PROX_API prox_signed_result prox_box_box_signed_distance(const prox_box *a, const prox_box *b)
+{
+    prox_signed_result r = {0};
+    prox_distance_result d = prox_box_box_distance(a, b);
+    r.status = d.status;
+    if (r.status != PROX_OK) return r;
+    prox_bframe A = prox_bframe_make(a), B = prox_bframe_make(b);
+    int i = 0;
+    prox_vec3 n = {0, 0, 0};
+    double o = sat_min_overlap(&A, &B, &i, &n);
+    if (!d.intersect && d.distance > 0.0) {
+        r.sd = d.distance;
+        r.normal = prox_v3_scale(prox_v3_sub(d.p2, d.p1), 1.0 / d.distance);
+        r.p1 = d.p1;
+        r.p2 = d.p2;
+        return r;
+    }
+    r.sd = -o;
+    r.normal = n;
+    if (i < 3) { /* face of A: B's deepest feature under it */
+        r.p2 = face_witness(&A, i, &B, prox_v3_neg(n));
+        r.p1 = prox_v3_mad(r.p2, o, n);
+    } else if (i < 6) { /* face of B: A's deepest feature under it */
+        r.p1 = face_witness(&B, i - 3, &A, n);
+        r.p2 = prox_v3_mad(r.p1, -o, n);
+    } else { /* edge-edge: the support edges of A (along n) and B (along -n) */
+        int ea = (i - 6) / 3, eb = (i - 6) % 3;
+        double la[3], lb[3];
+        for (int k = 0; k < 3; ++k) {
+            la[k] = prox_v3_dot(n, A.a[k]) >= 0.0 ? A.h[k] : -A.h[k];
+            lb[k] = prox_v3_dot(n, B.a[k]) <= 0.0 ? B.h[k] : -B.h[k];
+        }
+        la[ea] = -A.h[ea];
+        lb[eb] = -B.h[eb];
+        prox_vec3 pa = prox_bframe_point(&A, la), pb = prox_bframe_point(&B, lb);
+        prox_vec3 qa = prox_v3_mad(pa, 2.0 * A.h[ea], A.a[ea]), qb = prox_v3_mad(pb, 2.0 * B.h[eb], B.a[eb]);
+        prox_seg_seg(pa, qa, pb, qb, &r.p1, &r.p2);
+    }
+    return r;
+}

@@ -1,0 +1,50 @@
+/* SPH-SPH: exact distance, proximal points and signed distance of two spheres.
+ * TRX report LA-UR-13-26757 Sec. 3.6, Eq. (174): they intersect iff d_AB <= R_A + R_B; the signed
+ * distance d_AB - R_A - R_B along the line of centres is also the exact penetration depth. */
+#include "distance/box_internal.h"
+
+/* Unit direction from a to b; an arbitrary fixed axis when the centres coincide. */
+static prox_vec3 centre_dir(prox_vec3 a, prox_vec3 b, double *d)
+{
+    prox_vec3 v = prox_v3_sub(b, a);
+    *d = prox_v3_norm(v);
+    return *d > 0.0 ? prox_v3_scale(v, 1.0 / *d) : prox_v3(0, 0, 1);
+}
+
+PROX_API prox_signed_result prox_sph_sph_signed_distance(const prox_sph *a, const prox_sph *b)
+{
+    prox_signed_result r = {0};
+    r.status = prox_sph_validate(a);
+    if (r.status == PROX_OK) r.status = prox_sph_validate(b);
+    if (r.status != PROX_OK) return r;
+    double d;
+    r.normal = centre_dir(a->center, b->center, &d);
+    r.sd = d - a->radius - b->radius;
+    r.p1 = prox_v3_mad(a->center, a->radius, r.normal);
+    r.p2 = prox_v3_mad(b->center, -b->radius, r.normal);
+    return r;
+}
+
+PROX_API prox_distance_result prox_sph_sph_distance(const prox_sph *a, const prox_sph *b)
+{
+    prox_distance_result r = {0};
+    prox_signed_result s = prox_sph_sph_signed_distance(a, b);
+    r.status = s.status;
+    if (r.status != PROX_OK) return r;
+    if (s.sd > 0.0) {
+        r.distance = s.sd;
+        r.p1 = s.p1;
+        r.p2 = s.p2;
+        r.certificate_gap = s.sd; /* the support gap along the line of centres is exactly sd */
+        return r;
+    }
+    /* Overlap: the point of the segment of centres at the same depth in both spheres is common. */
+    double d = prox_v3_dist(a->center, b->center);
+    double t = d > 0.0 ? a->radius / (a->radius + b->radius) : 0.0;
+    r.intersect = 1;
+    r.p1 = r.p2 = prox_v3_mad(a->center, t * d, s.normal);
+    /* Nested spheres: the smaller centre is common. */
+    if (d + a->radius <= b->radius) r.p1 = r.p2 = a->center;
+    else if (d + b->radius <= a->radius) r.p1 = r.p2 = b->center;
+    return r;
+}
