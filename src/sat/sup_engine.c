@@ -246,39 +246,85 @@ static void search_ridge(sup_search *s, prox_vec3 w)
     }
 }
 
+/* Centre of the subdifferential of phi at d: near a cone point of a cylinder (|P D| tiny) the
+ * radial part of its support point is dropped (it is arbitrary there). */
+static prox_vec3 phi_grad_centre(const sup_search *s, prox_vec3 d)
+{
+    prox_vec3 g = prox_v3_neg(s->delta);
+    const sup_body *bs[2] = {s->a, s->b};
+    for (int k = 0; k < 2; ++k) {
+        const sup_body *b = bs[k];
+        if (b->kind == SUP_CYL) {
+            double dw = prox_v3_dot(d, b->w);
+            prox_vec3 perp = prox_v3_mad(d, -dw, b->w);
+            double n = sqrt(prox_v3_norm2(perp));
+            g = prox_v3_mad(g, b->hh * sgn(dw), b->w);
+            if (n > 1e-6) g = prox_v3_mad(g, b->r / n, perp);
+        } else g = prox_v3_add(g, sup_pc(b, d));
+    }
+    return g;
+}
+
+/* Leaves a kink (cone point or ridge) where Newton stalls: steps of decreasing length along minus
+ * the tangential centre subgradient; 1 when phi decreased. */
+static int escape_kink(sup_search *s, prox_vec3 *d, double *f)
+{
+    prox_vec3 g = phi_grad_centre(s, *d);
+    prox_vec3 gt = prox_v3_mad(g, -prox_v3_dot(g, *d), *d);
+    double gn = sqrt(prox_v3_norm2(gt));
+    if (!(gn > 0.0)) return 0;
+    for (double th = 0.1; th > 1e-10; th *= 0.1) {
+        prox_vec3 dn = prox_v3_normalize(prox_v3_mad(*d, -th / gn, gt));
+        double fn = phi_eval(s, dn);
+        if (fn < *f) { *d = dn; *f = fn; record(s, dn, fn); return 1; }
+    }
+    return 0;
+}
+
+/* One Newton (or steepest-descent) step on the tangent plane with backtracking; returns the
+ * accepted step length, 0 when no decrease was found. */
+static double newton_step(sup_search *s, prox_vec3 *dp, double *fp)
+{
+    prox_vec3 d = *dp;
+    double f = *fp;
+    prox_vec3 t1 = prox_v3_any_perp(d), t2 = prox_v3_cross(d, t1);
+    prox_vec3 g = phi_grad(s, d);
+    double g1 = prox_v3_dot(g, t1), g2 = prox_v3_dot(g, t2);
+    prox_vec3 h1 = phi_hess(s, d, t1), h2 = phi_hess(s, d, t2);
+    double a = prox_v3_dot(t1, h1) - f, b = prox_v3_dot(t1, h2), c = prox_v3_dot(t2, h2) - f;
+    double det = a * c - b * b, x1, x2;
+    if (a > 0.0 && det > 0.0) {
+        x1 = -(c * g1 - b * g2) / det;
+        x2 = -(a * g2 - b * g1) / det;
+    } else { /* not locally convex: steepest descent, length scaled by |phi| */
+        double sc = fabs(f) > 0.0 ? fabs(f) : 1.0;
+        x1 = -g1 / sc;
+        x2 = -g2 / sc;
+    }
+    double len = hypot(x1, x2);
+    if (!(len > 0.0)) return 0.0;
+    if (len > 0.5) { x1 *= 0.5 / len; x2 *= 0.5 / len; len = 0.5; }
+    for (int ls = 0; ls < 30; ++ls) {
+        prox_vec3 dn = prox_v3_normalize(prox_v3_add(d, prox_v3_add(prox_v3_scale(t1, x1), prox_v3_scale(t2, x2))));
+        double fn = phi_eval(s, dn);
+        if (fn < f) { *dp = dn; *fp = fn; record(s, dn, fn); return len; }
+        x1 *= 0.5; x2 *= 0.5; len *= 0.5;
+    }
+    return 0.0;
+}
+
 /* 2-dim strata: Riemannian Newton on the unit sphere from d, with backtracking on phi. The
- * Riemannian Hessian of a degree-1 homogeneous phi is T^T H T - phi I on the tangent plane T. */
+ * Riemannian Hessian of a degree-1 homogeneous phi is T^T H T - phi I on the tangent plane T.
+ * Where it stalls (on a kink the minimiser is not at) it escapes along the centre subgradient. */
 static void cell_newton(sup_search *s, prox_vec3 d)
 {
     double f = phi_eval(s, d);
+    int escapes = 0;
     for (int it = 0; it < 40; ++it) {
-        prox_vec3 t1 = prox_v3_any_perp(d), t2 = prox_v3_cross(d, t1);
-        prox_vec3 g = phi_grad(s, d);
-        double g1 = prox_v3_dot(g, t1), g2 = prox_v3_dot(g, t2);
-        prox_vec3 h1 = phi_hess(s, d, t1), h2 = phi_hess(s, d, t2);
-        double a = prox_v3_dot(t1, h1) - f, b = prox_v3_dot(t1, h2), c = prox_v3_dot(t2, h2) - f;
-        double det = a * c - b * b, x1, x2;
-        if (a > 0.0 && det > 0.0) {
-            x1 = -(c * g1 - b * g2) / det;
-            x2 = -(a * g2 - b * g1) / det;
-        } else { /* not locally convex: steepest descent, length scaled by |phi| or the scale */
-            double gn = hypot(g1, g2), sc = fabs(f) > 0.0 ? fabs(f) : 1.0;
-            if (!(gn > 0.0)) return;
-            x1 = -g1 / sc;
-            x2 = -g2 / sc;
+        double len = newton_step(s, &d, &f);
+        if (len < 1e-13) {
+            if (escapes++ >= 3 || !escape_kink(s, &d, &f)) break;
         }
-        double len = hypot(x1, x2);
-        if (len > 0.5) { x1 *= 0.5 / len; x2 *= 0.5 / len; len = 0.5; }
-        int accepted = 0;
-        for (int ls = 0; ls < 40 && len > 1e-16; ++ls) {
-            prox_vec3 dn = prox_v3_normalize(prox_v3_add(d, prox_v3_add(prox_v3_scale(t1, x1), prox_v3_scale(t2, x2))));
-            double fn = phi_eval(s, dn);
-            if (fn < f) { d = dn; f = fn; accepted = 1; break; }
-            x1 *= 0.5; x2 *= 0.5; len *= 0.5;
-        }
-        if (!accepted) break;
-        record(s, d, f);
-        if (len < 1e-15) break;
     }
 }
 
@@ -355,7 +401,7 @@ static void witnesses(const sup_body *a, const sup_body *b, prox_vec3 n, double 
 {
     sup_face fa = face_of(a, n), fb = face_of(b, prox_v3_neg(n));
     prox_vec3 x = fa.c, y = face_proj(&fb, prox_v3_mad(x, sd, n));
-    if (fa.dim > 0 && fb.dim > 0)
+    if (fa.dim > 0 || fb.dim > 0)
         for (int it = 0; it < 64; ++it) {
             prox_vec3 xn = face_proj(&fa, prox_v3_mad(y, -sd, n));
             prox_vec3 yn = face_proj(&fb, prox_v3_mad(xn, sd, n));
