@@ -1,0 +1,106 @@
+/* Segment to infinite cylindrical surface. Agarwal et al. (2016) Sec. 3.1 parameterise the surface as
+ * base + z w + r (cos th u + sin th v); for a fixed segment point x the conditions f_z = f_th = 0 give
+ * z = (x - base).w and th = the angle of x's radial component, so the distance of x from the surface is
+ * |rho(x) - r| with rho the distance from the axis. Along the segment rho(t) = |g0 + t g1| (g0, g1 the
+ * radial parts of a - base and b - a) is convex, hence:
+ *  - min rho >= r: the segment is outside; distance = min rho - r at the clamped foot t0 on the axis;
+ *  - max rho <= r: the segment is inside; distance = r - max rho at the farther endpoint;
+ *  - otherwise the segment crosses the surface: distance 0 at the first t with rho(t) = r, from the
+ *    quadratic |g1|^2 tau^2 + 2 (g.g1) tau + (rho_min^2 - r^2) = 0 about t0 (stable root formula).
+ * set = 1 when the segment (positive length) is parallel to the axis (rho constant) or the closest
+ * segment point lies on the axis (every angle equidistant).
+ * Parameters: s1[0] = t on the segment; s2[0] = axial parameter z (length units), s2[1] = angle in the
+ * frame of prox_fcircle_make(base, w, r). Input: radius > 0, dir finite non-zero (normalised); height is
+ * ignored (not validated). */
+#include "distance/stationary.h"
+
+#define PAR_TOL 1e-12
+
+/* Validates the segment and the (infinite) surface; returns the unit axis in *w. */
+static prox_status check_input(const prox_segment *a, const prox_cylsurf *s, prox_vec3 *w)
+{
+    if (!a || !s) return PROX_EINVAL_ARG;
+    if (!prox_v3_isfinite(a->a) || !prox_v3_isfinite(a->b) || !prox_v3_isfinite(prox_v3_sub(a->b, a->a)) ||
+        !prox_v3_isfinite(s->base) || !prox_v3_isfinite(s->dir) || !isfinite(s->radius))
+        return PROX_EINVAL_NONFINITE;
+    if (!(s->radius > 0.0)) return PROX_EINVAL_RADIUS;
+    double n = prox_v3_norm(s->dir);
+    if (!(n > 0.0)) return PROX_EINVAL_AXIS;
+    *w = prox_v3(s->dir.x / n, s->dir.y / n, s->dir.z / n);
+    return PROX_OK;
+}
+
+/* Angle of (x, y) in [0, 2pi). */
+static double angle_0_2pi(double y, double x)
+{
+    double t = atan2(y, x);
+    if (t < 0.0) t += 2.0 * PROX_PI;
+    return t < 2.0 * PROX_PI ? t : 0.0;
+}
+
+/* First t in [0, 1] where rho(t) = r, given the foot t0 with rho(t0) = rho0 < r, g = g0 + t0 g1. */
+static double crossing_param(prox_vec3 g, prox_vec3 g1, double t0, double rho0, double r)
+{
+    double A = prox_v3_norm2(g1), B = prox_v3_dot(g, g1), C = -(r - rho0) * (r + rho0);
+    double disc = sqrt(B * B - A * C); /* A C < 0: real */
+    double q = -(B + (B >= 0.0 ? disc : -disc));
+    double tau[2] = {q / A, C / q}, best = 2.0;
+    for (int i = 0; i < 2; ++i) {
+        double t = t0 + tau[i];
+        if (!(t >= -1e-12 && t <= 1.0 + 1e-12)) continue;
+        t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+        if (t < best) best = t;
+    }
+    return best <= 1.0 ? best : t0; /* cannot happen for rho(0) or rho(1) > r; keep t0 then */
+}
+
+/* Fills the surface point closest to x (radial projection); sets *on_axis when x is on the axis. */
+static void surface_point(const prox_fcircle *f, prox_vec3 x, prox_prim_result *res, int *on_axis)
+{
+    prox_vec3 q = prox_v3_sub(x, f->c);
+    double z = prox_v3_dot(q, f->n), du = prox_v3_dot(q, f->u), dv = prox_v3_dot(q, f->v);
+    double rho = hypot(du, dv), cu = 1.0, cv = 0.0;
+    *on_axis = !(rho > 0.0);
+    if (!*on_axis) {
+        cu = du / rho;
+        cv = dv / rho;
+    }
+    res->p2 = prox_v3_add(prox_v3_mad(f->c, z, f->n), prox_v3_add(prox_v3_scale(f->u, f->r * cu), prox_v3_scale(f->v, f->r * cv)));
+    res->s2[0] = z;
+    res->s2[1] = *on_axis ? 0.0 : angle_0_2pi(dv, du);
+}
+
+PROX_API prox_prim_result prox_segment_cylsurf_inf(const prox_segment *a, const prox_cylsurf *s)
+{
+    prox_prim_result res = {0};
+    prox_vec3 w;
+    if ((res.status = check_input(a, s, &w)) != PROX_OK) return res;
+    prox_fcircle f = prox_fcircle_make(s->base, w, s->radius);
+    prox_vec3 d = prox_v3_sub(a->b, a->a);
+    prox_vec3 g0 = prox_v3_reject(prox_v3_sub(a->a, f.c), w), g1 = prox_v3_reject(d, w);
+    double A = prox_v3_norm2(g1);
+    double t0 = A > 0.0 ? -prox_v3_dot(g0, g1) / A : 0.0; /* foot on the axis, clamped */
+    t0 = t0 > 0.0 ? (t0 < 1.0 ? t0 : 1.0) : 0.0;
+    prox_vec3 g = prox_v3_mad(g0, t0, g1);
+    double rho0 = prox_v3_norm(g), rhoa = prox_v3_norm(g0), rhob = prox_v3_norm(prox_v3_add(g0, g1));
+    double t, dist;
+    if (rho0 >= f.r) { /* outside */
+        t = t0;
+        dist = rho0 - f.r;
+    } else if (rhoa <= f.r && rhob <= f.r) { /* inside: the endpoint farther from the axis */
+        t = rhob > rhoa ? 1.0 : 0.0;
+        dist = f.r - (rhob > rhoa ? rhob : rhoa);
+    } else {
+        t = crossing_param(g, g1, t0, rho0, f.r);
+        dist = 0.0;
+    }
+    res.p1 = t == 0.0 ? a->a : (t == 1.0 ? a->b : prox_v3_mad(a->a, t, d));
+    res.s1[0] = t;
+    int on_axis;
+    surface_point(&f, res.p1, &res, &on_axis);
+    double len = prox_v3_norm(d);
+    res.set = on_axis || (len > 0.0 && sqrt(A) <= PAR_TOL * len);
+    res.distance = dist;
+    res.status = PROX_OK;
+    return res;
+}
