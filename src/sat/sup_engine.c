@@ -71,14 +71,17 @@ double sup_hc(const sup_body *b, prox_vec3 d)
     switch (b->kind) {
     case SUP_CYL: {
         double dw = prox_v3_dot(d, b->w);
-        return b->r * prox_v3_norm(prox_v3_mad(d, -dw, b->w)) + b->hh * fabs(dw);
+        return b->r * sqrt(prox_v3_norm2(prox_v3_mad(d, -dw, b->w))) + b->hh * fabs(dw);
     }
     case SUP_BOX:
         return b->ext[0] * fabs(prox_v3_dot(d, b->e[0])) + b->ext[1] * fabs(prox_v3_dot(d, b->e[1])) +
                b->ext[2] * fabs(prox_v3_dot(d, b->e[2]));
-    default: return b->r * prox_v3_norm(d);
+    default: return b->r * sqrt(prox_v3_norm2(d));
     }
 }
+
+/* d / |d| for directions of moderate length (no overflow possible here). */
+static prox_vec3 unit(prox_vec3 d) { return prox_v3_scale(d, 1.0 / sqrt(prox_v3_norm2(d))); }
 
 static double sgn(double x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0); }
 
@@ -89,7 +92,7 @@ prox_vec3 sup_pc(const sup_body *b, prox_vec3 d)
         double dw = prox_v3_dot(d, b->w);
         prox_vec3 p = prox_v3_scale(b->w, b->hh * sgn(dw));
         prox_vec3 perp = prox_v3_mad(d, -dw, b->w);
-        double n = prox_v3_norm(perp);
+        double n = sqrt(prox_v3_norm2(perp));
         return n > 0.0 ? prox_v3_mad(p, b->r / n, perp) : p;
     }
     case SUP_BOX: {
@@ -98,7 +101,7 @@ prox_vec3 sup_pc(const sup_body *b, prox_vec3 d)
         return p;
     }
     default: {
-        double n = prox_v3_norm(d);
+        double n = sqrt(prox_v3_norm2(d));
         return n > 0.0 ? prox_v3_scale(d, b->r / n) : d;
     }
     }
@@ -110,14 +113,14 @@ static prox_vec3 sup_hess(const sup_body *b, prox_vec3 d, prox_vec3 v)
     if (b->kind == SUP_CYL) {
         double dw = prox_v3_dot(d, b->w);
         prox_vec3 perp = prox_v3_mad(d, -dw, b->w);
-        double n = prox_v3_norm(perp);
+        double n = sqrt(prox_v3_norm2(perp));
         if (!(n > 0.0)) return prox_v3(0, 0, 0);
         prox_vec3 p = prox_v3_scale(perp, 1.0 / n);
         prox_vec3 x = prox_v3_mad(prox_v3_mad(v, -prox_v3_dot(v, b->w), b->w), -prox_v3_dot(v, p), p);
         return prox_v3_scale(x, b->r / n);
     }
     if (b->kind == SUP_SPH) {
-        double n = prox_v3_norm(d);
+        double n = sqrt(prox_v3_norm2(d));
         prox_vec3 u = prox_v3_scale(d, 1.0 / n);
         return prox_v3_scale(prox_v3_mad(v, -prox_v3_dot(v, u), u), b->r / n);
     }
@@ -137,6 +140,7 @@ static int sup_ridges(const sup_body *b, prox_vec3 out[3])
 typedef struct sup_search {
     const sup_body *a, *b;
     prox_vec3 delta;
+    double scale;                /* max(|Delta|, sizes) */
     double best_phi;
     prox_vec3 best_d;
     int nk;                      /* top-k distinct starts for the cell search */
@@ -180,7 +184,7 @@ static void record(sup_search *s, prox_vec3 d, double f)
 
 static double consider(sup_search *s, prox_vec3 d)
 {
-    double n = prox_v3_norm(d);
+    double n = sqrt(prox_v3_norm2(d));
     if (!(n > 0.0)) return INFINITY;
     d = prox_v3_scale(d, 1.0 / n);
     double f = phi_eval(s, d);
@@ -207,9 +211,10 @@ static void search_points(sup_search *s)
             consider(s, bs[k]->w);
             consider(s, prox_v3_neg(bs[k]->w));
         }
-    if (prox_v3_norm(s->delta) > 0.0) {
-        consider(s, s->delta);
-        consider(s, prox_v3_neg(s->delta));
+    if (prox_v3_norm2(s->delta) > 0.0) {
+        prox_vec3 u = prox_v3_normalize(s->delta);
+        consider(s, u);
+        consider(s, prox_v3_neg(u));
     }
 }
 
@@ -225,6 +230,7 @@ static void ridge_refine(sup_search *s, prox_vec3 u, prox_vec3 v, double lo, dou
         double g1 = prox_v3_dot(phi_grad(s, d), dt);
         double g2 = prox_v3_dot(dt, phi_hess(s, d, dt)) - f;
         if (g1 > 0.0) hi = th; else if (g1 < 0.0) lo = th; else return;
+        if (g2 > 0.0 && 0.5 * g1 * g1 / g2 <= 1e-17 * s->scale) return; /* decrement: converged */
         double tn = g2 > 0.0 ? th - g1 / g2 : 0.5 * (lo + hi);
         if (!(tn > lo && tn < hi)) tn = 0.5 * (lo + hi);
         if (fabs(tn - th) <= 1e-15 * (1.0 + fabs(th)) || hi - lo <= 1e-14) return;
@@ -265,6 +271,22 @@ static prox_vec3 phi_grad_centre(const sup_search *s, prox_vec3 d)
     return g;
 }
 
+/* 1 when d is within 1e-5 rad of a ridge or a cone point of either body. */
+static int near_kink(const sup_search *s, prox_vec3 d)
+{
+    const sup_body *bs[2] = {s->a, s->b};
+    for (int k = 0; k < 2; ++k) {
+        const sup_body *b = bs[k];
+        if (b->kind == SUP_CYL) {
+            double dw = fabs(prox_v3_dot(d, b->w));
+            if (dw < 1e-5 || dw > 1.0 - 5e-11) return 1;
+        } else if (b->kind == SUP_BOX)
+            for (int i = 0; i < 3; ++i)
+                if (fabs(prox_v3_dot(d, b->e[i])) < 1e-5) return 1;
+    }
+    return 0;
+}
+
 /* Leaves a kink (cone point or ridge) where Newton stalls: steps of decreasing length along minus
  * the tangential centre subgradient; 1 when phi decreased. */
 static int escape_kink(sup_search *s, prox_vec3 *d, double *f)
@@ -274,7 +296,7 @@ static int escape_kink(sup_search *s, prox_vec3 *d, double *f)
     double gn = sqrt(prox_v3_norm2(gt));
     if (!(gn > 0.0)) return 0;
     for (double th = 0.1; th > 1e-10; th *= 0.1) {
-        prox_vec3 dn = prox_v3_normalize(prox_v3_mad(*d, -th / gn, gt));
+        prox_vec3 dn = unit(prox_v3_mad(*d, -th / gn, gt));
         double fn = phi_eval(s, dn);
         if (fn < *f) { *d = dn; *f = fn; record(s, dn, fn); return 1; }
     }
@@ -296,6 +318,8 @@ static double newton_step(sup_search *s, prox_vec3 *dp, double *fp)
     if (a > 0.0 && det > 0.0) {
         x1 = -(c * g1 - b * g2) / det;
         x2 = -(a * g2 - b * g1) / det;
+        /* Newton decrement below rounding of phi: converged (no line search needed). */
+        if (-0.5 * (g1 * x1 + g2 * x2) <= 1e-17 * s->scale) return 0.0;
     } else { /* not locally convex: steepest descent, length scaled by |phi| */
         double sc = fabs(f) > 0.0 ? fabs(f) : 1.0;
         x1 = -g1 / sc;
@@ -304,8 +328,8 @@ static double newton_step(sup_search *s, prox_vec3 *dp, double *fp)
     double len = hypot(x1, x2);
     if (!(len > 0.0)) return 0.0;
     if (len > 0.5) { x1 *= 0.5 / len; x2 *= 0.5 / len; len = 0.5; }
-    for (int ls = 0; ls < 30; ++ls) {
-        prox_vec3 dn = prox_v3_normalize(prox_v3_add(d, prox_v3_add(prox_v3_scale(t1, x1), prox_v3_scale(t2, x2))));
+    for (int ls = 0; ls < 14; ++ls) {
+        prox_vec3 dn = unit(prox_v3_add(d, prox_v3_add(prox_v3_scale(t1, x1), prox_v3_scale(t2, x2))));
         double fn = phi_eval(s, dn);
         if (fn < f) { *dp = dn; *fp = fn; record(s, dn, fn); return len; }
         x1 *= 0.5; x2 *= 0.5; len *= 0.5;
@@ -323,7 +347,7 @@ static void cell_newton(sup_search *s, prox_vec3 d)
     for (int it = 0; it < 40; ++it) {
         double len = newton_step(s, &d, &f);
         if (len < 1e-13) {
-            if (escapes++ >= 3 || !escape_kink(s, &d, &f)) break;
+            if (!near_kink(s, d) || escapes++ >= 3 || !escape_kink(s, &d, &f)) break;
         }
     }
 }
@@ -416,6 +440,7 @@ static void witnesses(const sup_body *a, const sup_body *b, prox_vec3 n, double 
 prox_signed_result sup_signed_distance(const sup_body *a, const sup_body *b)
 {
     sup_search s = {.a = a, .b = b, .delta = prox_v3_sub(b->c, a->c), .best_phi = INFINITY};
+    s.scale = fmax(prox_v3_norm(s.delta), fmax(a->size, b->size));
     s.best_d = prox_v3(0, 0, 1);
     search_points(&s);
     prox_vec3 r[6];
