@@ -1,0 +1,297 @@
+/* Circle to circle distance, P(C,C) of Agarwal et al. (2016) Sec. 3.5: the distance function of
+ * P(D,C) (Sec. 3.4, Eq. (17)) with s1 = 1, stationarity reduced to one univariate polynomial of
+ * degree eight in v1 = tan(theta1/2) (the paper's g3), rooted numerically.
+ * Instead of the paper's 700 kB symbolic g3 this file eliminates theta2 geometrically (the partner of
+ * a point is its closest point on the other circle) and builds g3 numerically in a normalised frame
+ * (docs/algorithms/circle_circle.md):
+ *   circle a: P(th) = (cos th, sin th, 0) (centre at the origin, unit radius);
+ *   circle b: centre C, unit normal N, radius r (all divided by r_a, in a's frame);
+ *   D = P - C, dn = N.D, rho = |D x N| (distance of P from b's axis);
+ *   g(th) = dist^2(P, b) = (rho - r)^2 + dn^2,
+ *   g'(th)/2 = h(th) = (1 - r/rho) (D_perp.P') + dn (N.P'),          (stationarity)
+ *   equivalently (C.P') rho = r (C.P' + dn N.P'); squared and multiplied by (1 + t^2)^4:
+ *   F(t) = A(t)^2 R(t) - r^2 (A(t)(1 + t^2) + dn(t) B(t))^2 = 0, degree 8, with A = C.P',
+ *   B = N.P', R = rho^2, each trig-linear factor k0 + kc cos + ks sin written as
+ *   k0 (1 + t^2) + kc (1 - t^2) + 2 ks t.
+ * Squaring adds the stationary points of the far-point distance; those are filtered by |h|.
+ * Every root (and the starts 0, pi/2, pi, 3pi/2, which cover th = pi, sent to infinity by t) is
+ * polished by safeguarded Newton on h. */
+#include "core/poly.h"
+#include "distance/stationary.h"
+
+#include <float.h>
+
+/* Angles closer than this (radians) are one stationary point. */
+#define CC_DEDUP 1e-9
+/* |h| below this x scale^2 counts as stationary after polishing (spurious roots have |h| = 2|C.P'|). */
+#define CC_STAT_TOL 1e-8
+/* Coaxial when N is along a's normal and C on a's axis to within this (relative). */
+#define CC_COAXIAL_TOL (16.0 * DBL_EPSILON)
+
+/* Circle b in the normalised frame of circle a. */
+typedef struct cc_prob {
+    double cx, cy, cz; /* C */
+    double nx, ny, nz; /* N */
+    double r;
+    double kx, ky, kz; /* C x N */
+    double scale;      /* 1 + |C| + r */
+} cc_prob;
+
+/* Values at one angle: h = g'/2, dh = h', g = dist^2 (normalised units). */
+typedef struct cc_eval {
+    double h, dh, g;
+    int axis; /* P on b's axis: h undefined */
+} cc_eval;
+
+static cc_prob cc_make(const prox_fcircle *a, const prox_fcircle *b)
+{
+    cc_prob p;
+    prox_vec3 d = prox_v3_sub(b->c, a->c);
+    double ir = 1.0 / a->r;
+    p.cx = prox_v3_dot(d, a->u) * ir, p.cy = prox_v3_dot(d, a->v) * ir, p.cz = prox_v3_dot(d, a->n) * ir;
+    p.nx = prox_v3_dot(b->n, a->u), p.ny = prox_v3_dot(b->n, a->v), p.nz = prox_v3_dot(b->n, a->n);
+    double nn = sqrt(p.nx * p.nx + p.ny * p.ny + p.nz * p.nz);
+    p.nx /= nn, p.ny /= nn, p.nz /= nn;
+    p.r = b->r * ir;
+    p.kx = p.cy * p.nz - p.cz * p.ny, p.ky = p.cz * p.nx - p.cx * p.nz, p.kz = p.cx * p.ny - p.cy * p.nx;
+    p.scale = 1.0 + sqrt(p.cx * p.cx + p.cy * p.cy + p.cz * p.cz) + p.r;
+    return p;
+}
+
+/* h, h' and g at th (formulas in the file comment; P'' = -P, |P'| = 1). */
+static cc_eval cc_at(const cc_prob *p, double th)
+{
+    cc_eval e = {0, 0, 0, 0};
+    double c = cos(th), s = sin(th);
+    double dx = c - p->cx, dy = s - p->cy, dz = -p->cz;
+    double dn = p->nx * dx + p->ny * dy + p->nz * dz;
+    double qx = dx - dn * p->nx, qy = dy - dn * p->ny, qz = dz - dn * p->nz; /* D_perp */
+    double rho = sqrt(qx * qx + qy * qy + qz * qz);
+    double np1 = -p->nx * s + p->ny * c;  /* N.P' */
+    double qp1 = -qx * s + qy * c;        /* D_perp.P' */
+    double qp0 = qx * c + qy * s;         /* D_perp.P */
+    double np0 = p->nx * c + p->ny * s;   /* N.P */
+    e.g = (rho - p->r) * (rho - p->r) + dn * dn;
+    if (!(rho > 0.0)) {
+        e.axis = 1;
+        return e;
+    }
+    double f = 1.0 - p->r / rho;
+    e.h = f * qp1 + dn * np1;
+    e.dh = p->r * qp1 * qp1 / (rho * rho * rho) + f * (1.0 - np1 * np1 - qp0) + np1 * np1 - dn * np0;
+    return e;
+}
+
+/* Safeguarded Newton on h from th: steps clamped to 0.5 rad, halved until |h| decreases; returns
+ * the best angle found and its evaluation. */
+static double cc_polish(const cc_prob *p, double th, cc_eval *out)
+{
+    cc_eval e = cc_at(p, th);
+    for (int it = 0; it < 50 && !e.axis && e.h != 0.0; ++it) {
+        if (e.dh == 0.0) break;
+        double step = e.h / e.dh;
+        if (step > 0.5) step = 0.5;
+        if (step < -0.5) step = -0.5;
+        int moved = 0;
+        for (int k = 0; k < 6; ++k, step *= 0.5) {
+            cc_eval en = cc_at(p, th - step);
+            if (!en.axis && fabs(en.h) < fabs(e.h)) {
+                th -= step, e = en, moved = 1;
+                break;
+            }
+        }
+        if (!moved || fabs(step) <= 4.0 * DBL_EPSILON) break;
+    }
+    *out = e;
+    return th;
+}
+
+/* Quadratic in t for k0 + kc cos + ks sin, times (1 + t^2). */
+static void cc_lin(double k0, double kc, double ks, double q[3])
+{
+    q[0] = k0 + kc, q[1] = 2.0 * ks, q[2] = k0 - kc;
+}
+
+/* out = a * b (degrees da, db). */
+static void cc_mul(const double *a, int da, const double *b, int db, double *out)
+{
+    for (int k = 0; k <= da + db; ++k) out[k] = 0.0;
+    for (int i = 0; i <= da; ++i)
+        for (int j = 0; j <= db; ++j) out[i + j] += a[i] * b[j];
+}
+
+/* The degree-8 polynomial F(t) of the file comment. */
+static void cc_poly(const cc_prob *p, double F[9])
+{
+    double A[3], B[3], Dn[3], X[3], Y[3], Z[3], one[3] = {1.0, 0.0, 1.0};
+    cc_lin(0.0, p->cy, -p->cx, A);
+    cc_lin(0.0, p->ny, -p->nx, B);
+    cc_lin(-(p->nx * p->cx + p->ny * p->cy + p->nz * p->cz), p->nx, p->ny, Dn);
+    cc_lin(-p->kx, 0.0, p->nz, X); /* D x N = P x N - C x N */
+    cc_lin(-p->ky, -p->nz, 0.0, Y);
+    cc_lin(-p->kz, p->ny, -p->nx, Z);
+    double R[5], t4[5], A2[5], L[5], M[5], L1[9], L2[9];
+    cc_mul(X, 2, X, 2, R);
+    cc_mul(Y, 2, Y, 2, t4);
+    for (int k = 0; k < 5; ++k) R[k] += t4[k];
+    cc_mul(Z, 2, Z, 2, t4);
+    for (int k = 0; k < 5; ++k) R[k] += t4[k];
+    cc_mul(A, 2, A, 2, A2);
+    cc_mul(A, 2, one, 2, L);
+    cc_mul(Dn, 2, B, 2, M);
+    for (int k = 0; k < 5; ++k) L[k] += M[k];
+    cc_mul(A2, 4, R, 4, L1);
+    cc_mul(L, 4, L, 4, L2);
+    for (int k = 0; k < 9; ++k) F[k] = L1[k] - p->r * p->r * L2[k];
+}
+
+/* Angle in [0, 2pi). */
+static double cc_wrap(double th)
+{
+    th = fmod(th, 2.0 * PROX_PI);
+    if (th < 0.0) th += 2.0 * PROX_PI;
+    return th < 2.0 * PROX_PI ? th : 0.0;
+}
+
+/* Adds th to the list unless an equal angle is there; beyond 8 keeps the 8 of smallest g. */
+static void cc_add(double th, double g, double *ths, double *gs, int *n)
+{
+    for (int i = 0; i < *n; ++i) {
+        double d = fabs(th - ths[i]);
+        if (fmin(d, 2.0 * PROX_PI - d) <= CC_DEDUP) {
+            if (g < gs[i]) ths[i] = th, gs[i] = g;
+            return;
+        }
+    }
+    int at = *n;
+    if (at == 8) { /* replace the largest g if th is better */
+        at = 0;
+        for (int i = 1; i < 8; ++i)
+            if (gs[i] > gs[at]) at = i;
+        if (!(g < gs[at])) return;
+    } else {
+        ++*n;
+    }
+    ths[at] = th, gs[at] = g;
+}
+
+/* Angles where circle a meets (or, axis parallel to a's plane, comes closest to) b's axis
+ * C + s N. There g has a cusp (h is undefined) that Newton cannot polish; when a is tangent to the
+ * axis the cusp is a minimum attained on the whole of b (the degenerate contact). */
+static int cc_axis_points(const cc_prob *p, double ax[2])
+{
+    if (fabs(p->nz) > 1e-8) { /* the axis crosses a's plane at one point */
+        double s = -p->cz / p->nz, x = p->cx + s * p->nx, y = p->cy + s * p->ny;
+        if (!(fabs(hypot(x, y) - 1.0) <= 1e-6)) return 0;
+        ax[0] = atan2(y, x);
+        return 1;
+    }
+    /* Axis (nearly) parallel to a's plane: work with its projection, direction (nx, ny)/|.|. */
+    double m = hypot(p->nx, p->ny), ex = p->nx / m, ey = p->ny / m;
+    double along = p->cx * ex + p->cy * ey, fx = p->cx - along * ex, fy = p->cy - along * ey;
+    double delta = hypot(fx, fy);
+    if (delta >= 1.0 || delta == 0.0) { /* no crossing: nearest point, or the axis through a's centre */
+        ax[0] = delta > 0.0 ? atan2(fy, fx) : atan2(ey, ex);
+        ax[1] = ax[0] + PROX_PI;
+        return delta > 0.0 ? 1 : 2;
+    }
+    double w = sqrt((1.0 - delta) * (1.0 + delta));
+    ax[0] = atan2(fy + w * ey, fx + w * ex);
+    ax[1] = atan2(fy - w * ey, fx - w * ex);
+    return 2;
+}
+
+int prox_circle_circle_stationary(const prox_fcircle *a, const prox_fcircle *b, double th[8], int *count)
+{
+    *count = 0;
+    cc_prob p = cc_make(a, b);
+    double cxy = hypot(p.cx, p.cy), nxy = hypot(p.nx, p.ny);
+    if (nxy <= CC_COAXIAL_TOL && cxy <= CC_COAXIAL_TOL * p.scale) return 1; /* g is constant */
+    double F[9], roots[8];
+    int nr = 0;
+    cc_poly(&p, F);
+    prox_status st = prox_poly_real_roots(F, 8, roots, &nr);
+    if (st != PROX_OK) return -(int)st;
+    double starts[12];
+    int ns = 0;
+    for (int i = 0; i < nr; ++i) starts[ns++] = 2.0 * atan(roots[i]);
+    for (int k = 0; k < 4; ++k) starts[ns++] = 0.5 * PROX_PI * k; /* th = pi is t = infinity */
+    double gs[8];
+    const double tol = CC_STAT_TOL * p.scale;
+    for (int i = 0; i < ns; ++i) {
+        cc_eval e;
+        double t = cc_polish(&p, starts[i], &e);
+        if (e.axis || !(fabs(e.h) <= tol)) continue; /* spurious root of the squared equation */
+        cc_add(cc_wrap(t), e.g, th, gs, count);
+    }
+    double ax[2];
+    int na = cc_axis_points(&p, ax);
+    for (int i = 0; i < na; ++i) cc_add(cc_wrap(ax[i]), cc_at(&p, ax[i]).g, th, gs, count);
+    return 0;
+}
+
+/* Validates a circle and returns its frame with a unit normal. */
+static prox_status cc_check(const prox_circle *c, prox_fcircle *out)
+{
+    if (!c) return PROX_EINVAL_ARG;
+    if (!prox_v3_isfinite(c->center) || !prox_v3_isfinite(c->normal) || !isfinite(c->radius))
+        return PROX_EINVAL_NONFINITE;
+    if (!(c->radius > 0.0)) return PROX_EINVAL_RADIUS;
+    double n = prox_v3_norm(c->normal);
+    if (!(n > 0.0)) return PROX_EINVAL_AXIS;
+    *out = prox_fcircle_make(c->center, prox_v3_scale(c->normal, 1.0 / n), c->radius);
+    return PROX_OK;
+}
+
+/* The point of b closest to the point of a at angle th, with its angle on b and the distance
+ * computed relative to a's centre (so far-from-origin inputs keep their relative accuracy). */
+static double cc_partner(const prox_fcircle *a, const prox_fcircle *b, double th, prox_vec3 *q, double *thb,
+                         double *rho_out)
+{
+    prox_vec3 pa = prox_v3_add(prox_v3_scale(a->u, a->r * cos(th)), prox_v3_scale(a->v, a->r * sin(th)));
+    prox_vec3 d = prox_v3_sub(pa, prox_v3_sub(b->c, a->c)); /* point of a relative to b's centre */
+    double du = prox_v3_dot(d, b->u), dv = prox_v3_dot(d, b->v), dh = prox_v3_dot(d, b->n);
+    double rho = hypot(du, dv);
+    *rho_out = rho;
+    double cu = rho > 0.0 ? du / rho : 1.0, cv = rho > 0.0 ? dv / rho : 0.0;
+    *thb = cc_wrap(atan2(cv, cu));
+    *q = prox_v3_add(b->c, prox_v3_add(prox_v3_scale(b->u, b->r * cu), prox_v3_scale(b->v, b->r * cv)));
+    return hypot(rho - b->r, dh);
+}
+
+PROX_API prox_prim_result prox_circle_circle(const prox_circle *a, const prox_circle *b)
+{
+    prox_prim_result res = {0};
+    prox_fcircle fa, fb;
+    if ((res.status = cc_check(a, &fa)) != PROX_OK) return res;
+    if ((res.status = cc_check(b, &fb)) != PROX_OK) return res;
+    double th[8];
+    int n = 0;
+    int rc = prox_circle_circle_stationary(&fa, &fb, th, &n);
+    if (rc < 0) {
+        res.status = (prox_status)(-rc);
+        return res;
+    }
+    double best_th = 0.0, best = INFINITY;
+    if (rc == 1) {
+        res.set = 1; /* coaxial: every point of a is equidistant from b */
+    } else {
+        for (int i = 0; i < n; ++i) {
+            prox_vec3 q;
+            double thb, rho, d = cc_partner(&fa, &fb, th[i], &q, &thb, &rho);
+            if (d < best) best = d, best_th = th[i];
+        }
+    }
+    prox_vec3 q;
+    double thb, rho;
+    res.distance = cc_partner(&fa, &fb, best_th, &q, &thb, &rho);
+    /* Closest point of a on b's axis: every point of b is equidistant (degenerate contact). */
+    double scale = fmax(fmax(fa.r, fb.r), prox_v3_dist(fa.c, fb.c));
+    if (rho <= 8.0 * DBL_EPSILON * scale) res.set = 1;
+    res.p1 = prox_fcircle_point(&fa, best_th);
+    res.p2 = q;
+    res.s1[0] = best_th;
+    res.s2[0] = thb;
+    res.status = PROX_OK;
+    return res;
+}
