@@ -1,0 +1,198 @@
+/* P(C, L) of Agarwal et al. (2016) Sec. 3.3: circle to segment, and every stationary angle of the
+ * squared distance from a circle point to an infinite line.
+ * Circle point P(th) = c + r (cos th u + sin th v) (Eq. (14) with s1 = 1); line x(t) = p + t w, |w| = 1.
+ * Eq. (16): f_t = 0 is linear in t, t = (P(th) - p).w. Substituting it into f_th = 0 gives g1 = 0; in the
+ * normalised frame (lengths divided by r, p the foot of c on the line, e = (c - p) / r) it reads
+ *   h(th) = A sin th + B cos th + C cos 2th + D sin 2th = 0,
+ *   A = (e.w)(u.w) - e.u,  B = e.v - (e.w)(v.w),  C = -(u.w)(v.w),  D = ((u.w)^2 - (v.w)^2) / 2,
+ * (h = g'(th) / (2 r^2), g = dist^2). The half-angle substitution x = tan(th/2) turns h (1 + x^2)^2 into
+ * the quartic g2 of Sec. 3.3:
+ *   (C - B) x^4 + (2A - 4D) x^3 - 6C x^2 + (2A + 4D) x + (B + C) = 0.
+ * Its leading coefficient is h(pi): the angle pi is sent to infinity by the substitution, so pi is added
+ * whenever h(pi) is small. Roots come from prox_poly_real_roots (closed form for quartics) and are
+ * polished by Newton on the exact h. h == 0 identically (A = B = C = D = 0) exactly when the line is the
+ * circle's axis.
+ * The segment minimum is the smallest of: the stationary angles whose foot t falls in the segment, and
+ * the two endpoints against the circle (point_circle.c); the constrained minimum of
+ * |P(th) - a - t(b - a)|^2 over t in [0, 1] is one of those. */
+#include "core/poly.h"
+#include "distance/stationary.h"
+
+#include <float.h>
+#include <stddef.h>
+
+/* Angles closer than this are one stationary point. */
+#define CL_DEDUP 1e-10
+/* h(pi) below this x (coefficient scale) adds the angle pi. */
+#define CL_PI_TOL 1e-6
+
+/* h(th) and h'(th) of the normalised problem. */
+typedef struct cl_coef {
+    double A, B, C, D;
+} cl_coef;
+static double cl_h(const cl_coef *k, double th, double *dh)
+{
+    double s = sin(th), c = cos(th), s2 = sin(2.0 * th), c2 = cos(2.0 * th);
+    if (dh) *dh = k->A * c - k->B * s - 2.0 * k->C * s2 + 2.0 * k->D * c2;
+    return k->A * s + k->B * c + k->C * c2 + k->D * s2;
+}
+
+/* Newton on h from th; returns the iterate with the smallest |h| (steps limited to 0.5 rad). */
+static double cl_polish(const cl_coef *k, double th)
+{
+    double best = th, dh, hb = fabs(cl_h(k, th, &dh));
+    for (int it = 0; it < 12 && hb > 0.0; ++it) {
+        double h = cl_h(k, th, &dh);
+        if (!(fabs(dh) > 0.0)) break;
+        double step = h / dh;
+        if (!(fabs(step) <= 0.5)) break;
+        th -= step;
+        double hn = fabs(cl_h(k, th, NULL));
+        if (hn < hb) {
+            hb = hn;
+            best = th;
+        }
+        if (fabs(step) <= 4.0 * DBL_EPSILON * (1.0 + fabs(th))) break;
+    }
+    return best;
+}
+
+/* Wraps an angle into [0, 2pi). */
+static double wrap_2pi(double a)
+{
+    a = fmod(a, 2.0 * PROX_PI);
+    if (a < 0.0) a += 2.0 * PROX_PI;
+    return a < 2.0 * PROX_PI ? a : 0.0;
+}
+
+/* Sorts, merges angles closer than CL_DEDUP (also across 0 / 2pi) and keeps at most 4 (smallest |h|). */
+static int cl_dedup(const cl_coef *k, double *th, int n)
+{
+    for (int i = 1; i < n; ++i) /* insertion sort */
+        for (int j = i; j > 0 && th[j] < th[j - 1]; --j) {
+            double t = th[j];
+            th[j] = th[j - 1];
+            th[j - 1] = t;
+        }
+    int m = 0;
+    for (int i = 0; i < n; ++i)
+        if (m == 0 || th[i] - th[m - 1] > CL_DEDUP) th[m++] = th[i];
+    if (m > 1 && th[0] + 2.0 * PROX_PI - th[m - 1] <= CL_DEDUP) --m;
+    while (m > 4) { /* more than a trigonometric quartic can have: drop the worst residual */
+        int w = 0;
+        for (int i = 1; i < m; ++i)
+            if (fabs(cl_h(k, th[i], NULL)) > fabs(cl_h(k, th[w], NULL))) w = i;
+        th[w] = th[--m];
+    }
+    return m;
+}
+
+/* Fallback when the root finder fails: sign changes of h on a grid, then Newton. */
+static int cl_grid(const cl_coef *k, double *out)
+{
+    enum { N = 64 };
+    int n = 0;
+    double step = 2.0 * PROX_PI / N, hp = cl_h(k, 0.0, NULL);
+    for (int i = 1; i <= N && n < 8; ++i) {
+        double hc = cl_h(k, i * step, NULL);
+        if ((hp <= 0.0) != (hc <= 0.0)) out[n++] = cl_polish(k, (i - 0.5) * step);
+        hp = hc;
+    }
+    return n;
+}
+
+int prox_circle_line_stationary(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, double th[4], int *count)
+{
+    *count = 0;
+    /* Normalised frame: origin at the foot of c on the line, lengths in units of r. */
+    prox_vec3 foot = prox_v3_mad(p, prox_v3_dot(prox_v3_sub(c->c, p), w), w);
+    prox_vec3 e = prox_v3_scale(prox_v3_sub(c->c, foot), 1.0 / c->r);
+    double al = prox_v3_dot(e, w), be = prox_v3_dot(c->u, w), ga = prox_v3_dot(c->v, w);
+    cl_coef k = {al * be - prox_v3_dot(e, c->u), prox_v3_dot(e, c->v) - al * ga, -be * ga,
+                 0.5 * (be - ga) * (be + ga)};
+    double kmax = fmax(fmax(fabs(k.A), fabs(k.B)), fmax(fabs(k.C), fabs(k.D)));
+    if (kmax <= 64.0 * DBL_EPSILON * (1.0 + prox_v3_norm(e))) return 1; /* line along the axis */
+    double poly[5] = {k.B + k.C, 2.0 * k.A + 4.0 * k.D, -6.0 * k.C, 2.0 * k.A - 4.0 * k.D, k.C - k.B};
+    double roots[8], cand[12];
+    int nr = 0, n = 0;
+    if (prox_poly_real_roots(poly, 4, roots, &nr) == PROX_OK) {
+        for (int i = 0; i < nr; ++i) cand[n++] = cl_polish(&k, 2.0 * atan(roots[i]));
+        if (fabs(k.C - k.B) <= CL_PI_TOL * kmax) cand[n++] = cl_polish(&k, PROX_PI);
+    } else {
+        n = cl_grid(&k, cand);
+    }
+    for (int i = 0; i < n; ++i) cand[i] = wrap_2pi(cand[i]);
+    n = cl_dedup(&k, cand, n);
+    for (int i = 0; i < n; ++i) th[i] = cand[i];
+    *count = n;
+    return 0;
+}
+
+/* Validates a circle (normal normalised) and a segment. */
+static prox_status check_input(const prox_circle *c, const prox_segment *s, prox_fcircle *f)
+{
+    if (!c || !s) return PROX_EINVAL_ARG;
+    if (!prox_v3_isfinite(c->center) || !prox_v3_isfinite(c->normal) || !isfinite(c->radius) ||
+        !prox_v3_isfinite(s->a) || !prox_v3_isfinite(s->b) || !prox_v3_isfinite(prox_v3_sub(s->b, s->a)))
+        return PROX_EINVAL_NONFINITE;
+    if (!(c->radius > 0.0)) return PROX_EINVAL_RADIUS;
+    double n = prox_v3_norm(c->normal);
+    if (!(n > 0.0)) return PROX_EINVAL_AXIS;
+    *f = prox_fcircle_make(c->center, prox_v3(c->normal.x / n, c->normal.y / n, c->normal.z / n), c->radius);
+    return PROX_OK;
+}
+
+/* An endpoint (or axis point) x at parameter t against the circle; p1 on the circle, p2 = x. */
+static void consider_point(prox_prim_result *best, const prox_fcircle *f, prox_vec3 x, double t)
+{
+    prox_circle cc = {f->c, f->n, f->r};
+    prox_prim_result r = prox_point_circle(x, &cc);
+    if (r.status == PROX_OK && r.distance < best->distance) {
+        best->distance = r.distance;
+        best->p1 = r.p2;
+        best->p2 = x;
+        best->s1[0] = r.s2[0];
+        best->s2[0] = t;
+        best->set = r.set;
+    }
+}
+
+PROX_API prox_prim_result prox_circle_segment(const prox_circle *c, const prox_segment *s)
+{
+    prox_prim_result best = {0};
+    prox_fcircle f;
+    if ((best.status = check_input(c, s, &f)) != PROX_OK) return best;
+    best.distance = INFINITY;
+    prox_vec3 d = prox_v3_sub(s->b, s->a);
+    double dd = prox_v3_norm2(d);
+    if (dd > 0.0) {
+        double th[4];
+        int n = 0;
+        prox_vec3 w = prox_v3_scale(d, 1.0 / sqrt(dd));
+        if (prox_circle_line_stationary(&f, s->a, w, th, &n)) { /* segment on the axis */
+            double t = prox_v3_dot(prox_v3_sub(f.c, s->a), d) / dd;
+            t = t > 0.0 ? (t < 1.0 ? t : 1.0) : 0.0;
+            consider_point(&best, &f, prox_v3_mad(s->a, t, d), t);
+            best.set = 1;
+        }
+        for (int i = 0; i < n; ++i) { /* interior stationary pairs whose foot lies on the segment */
+            prox_vec3 x = prox_fcircle_point(&f, th[i]);
+            double t = prox_v3_dot(prox_v3_sub(x, s->a), d) / dd;
+            if (!(t >= 0.0 && t <= 1.0)) continue;
+            prox_vec3 y = prox_v3_mad(s->a, t, d);
+            double dist = prox_v3_dist(x, y);
+            if (dist < best.distance) {
+                best.distance = dist;
+                best.p1 = x;
+                best.p2 = y;
+                best.s1[0] = th[i];
+                best.s2[0] = t;
+                best.set = 0;
+            }
+        }
+    }
+    consider_point(&best, &f, s->a, 0.0);
+    consider_point(&best, &f, s->b, 1.0);
+    best.status = PROX_OK;
+    return best;
+}
