@@ -123,6 +123,18 @@ static void test_poly_deflation(void **state)
         assert_near(r[0], 1, 1e-14);
         assert_near(r[1], 2, 1e-14);
     }
+    /* Not negligible: x^3 + x^2 + 1e-60 keeps its root near -1 (tiny constant, not tiny leading). */
+    const double t3[4] = {1e-60, 0, 1, 1};
+    assert_int_equal(prox_poly_real_roots(t3, 3, r, &cnt), PROX_OK);
+    assert_true(cnt >= 1);
+    assert_near(r[0], -1, 1e-14);
+    /* Not negligible either: all roots near 100..700 make c_8 = 1.5 tiny next to c_0 = 3e15 but
+     * dominant at the roots (regression: a plain max-coefficient test deflated it). */
+    const double w8[8] = {100, 200, -300, 400, 500, -600, 700, 150};
+    double c8[9];
+    build_poly(w8, 8, NULL, NULL, 0, 1.5, c8);
+    assert_int_equal(prox_poly_real_roots(c8, 8, r, &cnt), PROX_OK);
+    check_roots(r, cnt, w8, 8, 1e-9);
     /* A huge common factor is harmless (scaled by a power of two). */
     double h[5] = {24e300, -50e300, 35e300, -10e300, 1e300};
     assert_int_equal(prox_poly_real_roots(h, 4, r, &cnt), PROX_OK);

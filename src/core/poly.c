@@ -13,8 +13,8 @@
 #include <gsl/gsl_poly.h>
 
 #define POLY_EPS DBL_EPSILON
-/* Leading coefficients below this fraction of the largest coefficient deflate the degree (after
- * rescaling x to the geometric-mean root size, see poly_leading_negligible). */
+/* Leading coefficients below this fraction of the largest coefficient deflate the degree (and
+ * negligible at the root scale too, see poly_leading_negligible). */
 #define POLY_DEFLATE_REL 1e-14
 /* A complex root with |imag| <= this x |root| is treated as a real root directly. */
 #define POLY_REAL_IM_REL 1e-12
@@ -141,21 +141,31 @@ static void poly_quartic(double a, double b, double c, double d, poly_cand z[4])
     for (int i = 0; i < 4; ++i) z[i].re -= s;
 }
 
-/* Is the leading coefficient negligible? Relative test on the coefficients of p(lambda y), where
- * lambda = (|c_j| / |c_n|)^(1/(n-j)) (j the lowest nonzero index) is the geometric mean size of
- * the nonzero roots: plain max-coefficient tests would deflate genuine leading terms of polynomials
- * whose roots are all large (c_n x^n dominates at the roots although c_n << max c_k). */
+/* Is the leading coefficient negligible? Two relative tests must both hold:
+ * (1) |c_n| <= 1e-14 max_k |c_k| (the plain coefficient test), and
+ * (2) at the root scale R of the remaining polynomial (Fujiwara's bound of c_0..c_m, m the highest
+ *     coefficient not negligible by (1)) the leading term is negligible: |c_n| R^n <= 1e-14 max |c_k| R^k.
+ * (1) alone would deflate genuine leading terms of polynomials whose roots are all large (c_n x^n
+ * dominates there although c_n << max c_k); (2) alone would drop a root of size 1 next to tiny ones. */
 static int poly_leading_negligible(const double *w, int n)
 {
+    double big = 0.0;
+    for (int k = 0; k < n; ++k) big = fmax(big, fabs(w[k]));
+    if (!(fabs(w[n]) <= POLY_DEFLATE_REL * big)) return 0;
     if (w[n] == 0.0) return 1;
-    int j = 0;
-    while (j < n && w[j] == 0.0) ++j;
-    if (j == n) return 0; /* c_n x^n: all roots at 0 */
-    const double ln = log2(fabs(w[n])), lgl = (log2(fabs(w[j])) - ln) / (n - j);
+    int m = n - 1;
+    while (m > 0 && fabs(w[m]) <= POLY_DEFLATE_REL * big) --m;
+    if (m == 0) return 1;
+    double R = 0.0;
+    for (int k = 0; k < m; ++k) R = fmax(R, pow(fabs(w[k] / w[m]), 1.0 / (m - k)));
+    R *= 2.0;
+    if (R == 0.0) return 1;
+    /* compare in logarithms: R^n may overflow */
+    const double lr = log2(R);
     double lmax = -INFINITY;
-    for (int k = j; k < n; ++k)
-        if (w[k] != 0.0) lmax = fmax(lmax, log2(fabs(w[k])) + k * lgl);
-    return ln + n * lgl < lmax + log2(POLY_DEFLATE_REL);
+    for (int k = 0; k < n; ++k)
+        if (w[k] != 0.0) lmax = fmax(lmax, log2(fabs(w[k])) + k * lr);
+    return log2(fabs(w[n])) + n * lr <= lmax + log2(POLY_DEFLATE_REL);
 }
 
 /* Checks arguments, scales the coefficients by a power of two and drops negligible leading terms.
