@@ -80,6 +80,11 @@ double sup_hc(const sup_body *b, prox_vec3 d)
     }
 }
 
+/* Second Gram-Schmidt pass: d - (d.w)w keeps an O(eps |d|) component along w, which is large
+ * relative to a short result (d nearly along the axis) and would put the support point off the
+ * cylinder by up to r eps |d| / |perp|. */
+static prox_vec3 reortho(prox_vec3 perp, prox_vec3 w) { return prox_v3_mad(perp, -prox_v3_dot(perp, w), w); }
+
 /* d / |d| for directions of moderate length (no overflow possible here). */
 static prox_vec3 unit(prox_vec3 d) { return prox_v3_scale(d, 1.0 / sqrt(prox_v3_norm2(d))); }
 
@@ -91,7 +96,7 @@ prox_vec3 sup_pc(const sup_body *b, prox_vec3 d)
     case SUP_CYL: {
         double dw = prox_v3_dot(d, b->w);
         prox_vec3 p = prox_v3_scale(b->w, b->hh * sgn(dw));
-        prox_vec3 perp = prox_v3_mad(d, -dw, b->w);
+        prox_vec3 perp = reortho(prox_v3_mad(d, -dw, b->w), b->w);
         double n = sqrt(prox_v3_norm2(perp));
         return n > 0.0 ? prox_v3_mad(p, b->r / n, perp) : p;
     }
@@ -112,7 +117,7 @@ static prox_vec3 sup_hess(const sup_body *b, prox_vec3 d, prox_vec3 v)
 {
     if (b->kind == SUP_CYL) {
         double dw = prox_v3_dot(d, b->w);
-        prox_vec3 perp = prox_v3_mad(d, -dw, b->w);
+        prox_vec3 perp = reortho(prox_v3_mad(d, -dw, b->w), b->w);
         double n = sqrt(prox_v3_norm2(perp));
         if (!(n > 0.0)) return prox_v3(0, 0, 0);
         prox_vec3 p = prox_v3_scale(perp, 1.0 / n);
@@ -262,7 +267,7 @@ static prox_vec3 phi_grad_centre(const sup_search *s, prox_vec3 d)
         const sup_body *b = bs[k];
         if (b->kind == SUP_CYL) {
             double dw = prox_v3_dot(d, b->w);
-            prox_vec3 perp = prox_v3_mad(d, -dw, b->w);
+            prox_vec3 perp = reortho(prox_v3_mad(d, -dw, b->w), b->w);
             double n = sqrt(prox_v3_norm2(perp));
             g = prox_v3_mad(g, b->hh * sgn(dw), b->w);
             if (n > 1e-6) g = prox_v3_mad(g, b->r / n, perp);
@@ -379,7 +384,7 @@ static sup_face face_of(const sup_body *b, prox_vec3 d)
     sup_face f = {0};
     if (b->kind == SUP_CYL) {
         double dw = prox_v3_dot(d, b->w);
-        prox_vec3 perp = prox_v3_mad(d, -dw, b->w);
+        prox_vec3 perp = reortho(prox_v3_mad(d, -dw, b->w), b->w);
         double pn = prox_v3_norm(perp);
         if (pn <= SUP_FACE_TOL) {
             f.dim = 2; f.disk = 1; f.n = b->w; f.rad = b->r;

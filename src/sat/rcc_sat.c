@@ -1,0 +1,290 @@
+/* Separating-axis verdict for two solid cylinders.
+ *
+ * Source: D. Eberly, "Intersection of Cylinders" (2000, rev. 2017), Secs. 4-8:
+ *   Eq. (6)  f(D) = r0|P0 D| + r1|P1 D| + (h0/2)|D.W0| + (h1/2)|D.W1| - |D.Delta|; D separates iff
+ *            f(D) < 0 (Eberly allows = 0; here touching counts as intersecting);
+ *   Sec. 5   the axis directions W0, W1, W0 x W1 and the parallel case;
+ *   Sec. 6   directions perpendicular to an axis: F(t), Eqs. (8)-(9), convex on [0, 1]; bisection on
+ *            F' with a certified lower bound (tangent lines at the bracket ends), errata fixed;
+ *   Sec. 7   other directions. Instead of Eberly's octant triangles and an unspecified minimiser,
+ *            the open hemisphere D.Delta > 0 is parameterised by its tangent plane at
+ *            n = Delta/|Delta|: D = n + z, z in n^perp, G(z) = f(n + z) = h_K(n + z) - |Delta| with
+ *            K = (A - C0) + (B - C1) (Minkowski sum of the centred cylinders), one convex function on
+ *            the whole plane. G is minimised by cutting planes: every support point k of K gives
+ *            G(z) >= k.(n + z) - |Delta|, and the minimum of the piecewise-linear model kept on a
+ *            triangle ("portal") of support points whose projection along n surrounds the origin is
+ *            t_low - |Delta|, t_low n the point of the portal on the line R n. The portal normal N
+ *            is the next trial direction: G(N / N.n) = t_up - |Delta|, t_up = h_K(N) / N.n.
+ *            t_low <= t* <= t_up bracket the exit t* of the line from K; stop when t_up < |Delta|
+ *            (N separates), t_low > |Delta| (certified: no separating direction exists), or
+ *            t_up - t_low <= 1e-13 x scale (touching within tolerance: reported as intersecting).
+ *            This is Minkowski portal refinement of the ray from the centre of K, read as a
+ *            certified minimisation of Eberly's G over the tangent plane. */
+#include "prox/sat.h"
+
+#include "prox/distance.h"
+#include "sup_engine.h"
+
+#define SAT_REL_TOL 1e-13
+#define SAT_MAX_IT 100
+
+/* One cylinder in Eberly's notation. */
+typedef struct sat_cyl {
+    prox_vec3 c, w;
+    double r, h;
+} sat_cyl;
+
+static sat_cyl sat_make(const prox_rcc *x)
+{
+    sat_cyl s;
+    s.h = prox_v3_norm(x->axis);
+    s.w = prox_v3_scale(x->axis, 1.0 / s.h);
+    s.c = prox_v3_mad(x->base, 0.5, x->axis);
+    s.r = x->radius;
+    return s;
+}
+
+/* Second Gram-Schmidt pass: d - (d.w)w keeps an O(eps |d|) component along w, which is large
+ * relative to a short result (d nearly along the axis) and would put the support point off the
+ * cylinder by up to r eps |d| / |perp|. */
+static prox_vec3 reortho(prox_vec3 perp, prox_vec3 w) { return prox_v3_mad(perp, -prox_v3_dot(perp, w), w); }
+
+/* Centred support function of one cylinder, Eberly Eq. (4) without D.C. */
+static double hc(const sat_cyl *s, prox_vec3 d)
+{
+    double dw = prox_v3_dot(d, s->w);
+    return s->r * sqrt(prox_v3_norm2(prox_v3_mad(d, -dw, s->w))) + 0.5 * s->h * fabs(dw);
+}
+static prox_vec3 pc(const sat_cyl *s, prox_vec3 d)
+{
+    double dw = prox_v3_dot(d, s->w);
+    prox_vec3 p = prox_v3_scale(s->w, dw > 0.0 ? 0.5 * s->h : (dw < 0.0 ? -0.5 * s->h : 0.0));
+    prox_vec3 perp = reortho(prox_v3_mad(d, -dw, s->w), s->w);
+    double n = sqrt(prox_v3_norm2(perp));
+    return n > 0.0 ? prox_v3_mad(p, s->r / n, perp) : p;
+}
+
+/* Gap along the unit direction of d: -f(d)/|d|; > 0 separates. */
+static double gap(const sat_cyl *a, const sat_cyl *b, prox_vec3 delta, prox_vec3 d)
+{
+    double n = prox_v3_norm(d);
+    prox_vec3 u = prox_v3_scale(d, 1.0 / n);
+    return fabs(prox_v3_dot(u, delta)) - hc(a, u) - hc(b, u);
+}
+
+static prox_sat_result separated(prox_vec3 d, prox_vec3 delta, double value, prox_sat_axis by)
+{
+    prox_sat_result r = {0};
+    r.status = PROX_OK;
+    r.intersect = 0;
+    d = prox_v3_normalize(d);
+    r.direction = prox_v3_dot(d, delta) < 0.0 ? prox_v3_neg(d) : d; /* from A towards B */
+    r.value = value;
+    r.decided_by = by;
+    return r;
+}
+
+/* ---- Sec. 6: directions perpendicular to W0 (Eqs. (8)-(9)) ------------------------------------ */
+
+typedef struct perp_f {
+    double r0, r1, h1b1, c1sqr, a2, b2;
+} perp_f;
+
+static double F(const perp_f *p, double t)
+{
+    double omt = 1.0 - t;
+    return p->r0 * sqrt(omt * omt + t * t) + p->r1 * sqrt(omt * omt + p->c1sqr * t * t) + p->h1b1 * t -
+           fabs(omt * p->a2 + t * p->b2);
+}
+static double sgnd(double x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0); }
+static double Fder(const perp_f *p, double t)
+{
+    double omt = 1.0 - t;
+    return p->r0 * (2.0 * t - 1.0) / sqrt(omt * omt + t * t) +
+           p->r1 * ((1.0 + p->c1sqr) * t - 1.0) / sqrt(omt * omt + p->c1sqr * t * t) + p->h1b1 -
+           (p->b2 - p->a2) * sgnd(omt * p->a2 + t * p->b2);
+}
+
+/* Minimises the convex F on [0, 1] until F(t) < -tol (returns t, a separating parameter) or a
+ * certified lower bound min F > tol (returns -1); -2 when undecided within the tolerance. */
+static double perp_quarter(const perp_f *p, double tol)
+{
+    double f0 = F(p, 0.0), f1 = F(p, 1.0);
+    if (f0 < -tol) return 0.0;
+    if (f1 < -tol) return 1.0;
+    double t0 = 0.0, t1 = 1.0, d0 = Fder(p, 0.0), d1 = Fder(p, 1.0);
+    if (d0 >= 0.0) return f0 > tol ? -1.0 : -2.0; /* F increasing: min at 0 */
+    if (d1 <= 0.0) return f1 > tol ? -1.0 : -2.0;
+    for (int it = 0; it < 60; ++it) {
+        /* tangent lines at t0 and t1 meet at the lower bound of F on [t0, t1] (convexity) */
+        double tx = (f1 - f0 + d0 * t0 - d1 * t1) / (d0 - d1);
+        double lb = f0 + d0 * (tx - t0);
+        if (lb > tol) return -1.0;
+        double tm = 0.5 * (t0 + t1), fm = F(p, tm);
+        if (fm < -tol) return tm;
+        double dm = Fder(p, tm);
+        if (dm > 0.0) { t1 = tm; f1 = fm; d1 = dm; }
+        else if (dm < 0.0) { t0 = tm; f0 = fm; d0 = dm; }
+        else return fm > tol ? -1.0 : -2.0;
+    }
+    return -2.0;
+}
+
+/* Eberly's SeparatedByCylinderPerpendiculars with the errata fixed: both quarter circles
+ * (U0 -> V0 and -U0 -> V0) are examined; the first one's "no separation" does not end the test. */
+static int perp_test(const sat_cyl *c0, const sat_cyl *c1, prox_vec3 delta, double tol, prox_vec3 *dir)
+{
+    double c1d = prox_v3_dot(c0->w, c1->w);
+    prox_vec3 v0 = prox_v3_mad(c1->w, -c1d, c0->w);
+    double b1 = prox_v3_norm(v0);
+    if (!(b1 > 0.0)) return 0;
+    v0 = prox_v3_scale(v0, 1.0 / b1);
+    prox_vec3 u0 = prox_v3_cross(v0, c0->w);
+    perp_f p = {c0->r, c1->r, 0.5 * c1->h * b1, c1d * c1d, prox_v3_dot(delta, u0), prox_v3_dot(delta, v0)};
+    for (int side = 0; side < 2; ++side) {
+        double t = perp_quarter(&p, tol);
+        if (t >= 0.0) {
+            prox_vec3 u = side ? prox_v3_neg(u0) : u0;
+            *dir = prox_v3_add(prox_v3_scale(u, 1.0 - t), prox_v3_scale(v0, t));
+            return 1;
+        }
+        p.a2 = -p.a2;
+    }
+    return 0;
+}
+
+/* ---- Sec. 7: other directions, certified cutting planes on the tangent plane ------------------ */
+
+typedef struct sat_k {
+    const sat_cyl *a, *b;
+    prox_vec3 n, u, v; /* n = Delta/|Delta|, (u, v) basis of the tangent plane */
+} sat_k;
+
+static prox_vec3 ksup(const sat_k *k, prox_vec3 d) { return prox_v3_add(pc(k->a, d), pc(k->b, d)); }
+static double kh(const sat_k *k, prox_vec3 d) { return hc(k->a, d) + hc(k->b, d); }
+/* 2D cross product of the tangent-plane projections of p and q. */
+static double cross2(const sat_k *k, prox_vec3 p, prox_vec3 q)
+{
+    return prox_v3_dot(p, k->u) * prox_v3_dot(q, k->v) - prox_v3_dot(p, k->v) * prox_v3_dot(q, k->u);
+}
+/* 1 when the projection of the origin lies in the projected triangle (p, q, r) (closed). */
+static int contains0(const sat_k *k, prox_vec3 p, prox_vec3 q, prox_vec3 r)
+{
+    double s1 = cross2(k, p, q), s2 = cross2(k, q, r), s3 = cross2(k, r, p);
+    return (s1 >= 0.0 && s2 >= 0.0 && s3 >= 0.0) || (s1 <= 0.0 && s2 <= 0.0 && s3 <= 0.0);
+}
+/* Tangential direction normal to the projected edge (p, q) pointing to the origin's side. */
+static prox_vec3 edge_dir(const sat_k *k, prox_vec3 p, prox_vec3 q)
+{
+    double px = prox_v3_dot(p, k->u), py = prox_v3_dot(p, k->v);
+    double ex = prox_v3_dot(q, k->u) - px, ey = prox_v3_dot(q, k->v) - py;
+    double nx = -ey, ny = ex;
+    if (nx * (-px) + ny * (-py) < 0.0) { nx = -nx; ny = -ny; }
+    return prox_v3_add(prox_v3_scale(k->u, nx), prox_v3_scale(k->v, ny));
+}
+
+/* Phase 1: three support points of K whose projections along n surround the origin (2D GJK for
+ * a point interior to the projection of K). Returns 0 on failure. */
+static int find_portal(const sat_k *k, prox_vec3 p[3])
+{
+    p[0] = ksup(k, k->n);
+    prox_vec3 t = prox_v3_mad(p[0], -prox_v3_dot(p[0], k->n), k->n);
+    if (prox_v3_norm2(t) == 0.0) { p[1] = p[2] = p[0]; return 1; } /* on the line itself */
+    p[1] = ksup(k, prox_v3_neg(t));
+    for (int it = 0; it < 64; ++it) {
+        prox_vec3 d = edge_dir(k, p[0], p[1]);
+        if (prox_v3_norm2(d) == 0.0) { p[2] = p[1]; return 1; } /* origin on the projected edge */
+        p[2] = ksup(k, d);
+        if (contains0(k, p[0], p[1], p[2])) return 1;
+        /* the origin is beyond edge (p0, p2) or beyond edge (p2, p1): keep that edge */
+        prox_vec3 e = prox_v3_sub(p[2], p[0]);
+        double so = cross2(k, e, prox_v3_neg(p[0])), s1 = cross2(k, e, prox_v3_sub(p[1], p[0]));
+        if (so * s1 < 0.0) p[1] = p[2];
+        else p[0] = p[2];
+    }
+    return 0;
+}
+
+/* Certified minimisation of G; returns 1 separated (dir, value = gap), 0 intersecting (value = the
+ * certified lower bound of G, > 0, or 0 when undecided within the tolerance). */
+static int other_dirs(const sat_cyl *a, const sat_cyl *b, prox_vec3 delta, double scale, prox_vec3 *dir, double *value)
+{
+    double L = prox_v3_norm(delta);
+    sat_k k = {a, b, prox_v3_scale(delta, 1.0 / L), {0, 0, 0}, {0, 0, 0}};
+    k.u = prox_v3_any_perp(k.n);
+    k.v = prox_v3_cross(k.n, k.u);
+    prox_vec3 p[3];
+    double tol = SAT_REL_TOL * scale, t_up = INFINITY, t_low = -INFINITY;
+    /* the pole itself: G(0) */
+    t_up = kh(&k, k.n);
+    if (t_up < L) { *dir = k.n; *value = L - t_up; return 1; }
+    if (!find_portal(&k, p)) { *value = 0.0; return 0; }
+    for (int it = 0; it < SAT_MAX_IT; ++it) {
+        prox_vec3 N = prox_v3_cross(prox_v3_sub(p[1], p[0]), prox_v3_sub(p[2], p[0]));
+        double nn = prox_v3_dot(N, k.n);
+        if (nn < 0.0) { N = prox_v3_neg(N); nn = -nn; }
+        if (!(nn > 1e-300 * prox_v3_norm(N))) N = k.n, nn = 1.0; /* degenerate portal: use the pole */
+        else t_low = fmax(t_low, prox_v3_dot(N, p[0]) / nn);
+        if (t_low > L) { *value = t_low - L; return 0; } /* certified: no separating direction */
+        double tu = kh(&k, N) / nn;
+        if (tu < t_up) t_up = tu;
+        if (tu < L) {
+            *dir = N;
+            *value = gap(a, b, delta, N);
+            return 1;
+        }
+        if (t_up - t_low <= tol) break;
+        prox_vec3 q = ksup(&k, N);
+        if (contains0(&k, q, p[1], p[2])) p[0] = q;
+        else if (contains0(&k, p[0], q, p[2])) p[1] = q;
+        else if (contains0(&k, p[0], p[1], q)) p[2] = q;
+        else break;
+    }
+    *value = fmax(0.0, t_low - L);
+    return 0;
+}
+
+PROX_API prox_sat_result prox_rcc_sat(const prox_rcc *a, const prox_rcc *b)
+{
+    prox_sat_result r = {0};
+    r.status = prox_rcc_validate(a);
+    if (r.status == PROX_OK) r.status = prox_rcc_validate(b);
+    if (r.status != PROX_OK) return r;
+    sat_cyl c0 = sat_make(a), c1 = sat_make(b);
+    prox_vec3 delta = prox_v3_sub(c1.c, c0.c);
+    double scale = prox_rcc_pair_scale(a, b), g;
+    r.intersect = 1;
+    if (prox_v3_norm2(delta) == 0.0) { r.decided_by = PROX_SAT_CERTIFIED; return r; } /* same centre */
+    /* Sec. 5: the axes */
+    if ((g = gap(&c0, &c1, delta, c0.w)) > 0.0) return separated(c0.w, delta, g, PROX_SAT_W0);
+    if ((g = gap(&c0, &c1, delta, c1.w)) > 0.0) return separated(c1.w, delta, g, PROX_SAT_W1);
+    prox_vec3 x = prox_v3_cross(c0.w, c1.w);
+    if (prox_v3_norm2(x) == 0.0) {
+        /* parallel axes: the radial direction decides (the height test was W0 above) */
+        prox_vec3 rad = prox_v3_mad(delta, -prox_v3_dot(delta, c0.w), c0.w);
+        if (prox_v3_norm2(rad) > 0.0 && (g = gap(&c0, &c1, delta, rad)) > 0.0)
+            return separated(rad, delta, g, PROX_SAT_PARALLEL);
+        r.value = prox_v3_norm2(rad) > 0.0 ? fmax(gap(&c0, &c1, delta, c0.w), gap(&c0, &c1, delta, rad))
+                                           : gap(&c0, &c1, delta, c0.w);
+        r.decided_by = PROX_SAT_PARALLEL;
+        return r;
+    }
+    if ((g = gap(&c0, &c1, delta, x)) > 0.0) return separated(x, delta, g, PROX_SAT_W0xW1);
+    /* Sec. 7 first: the certified minimisation covers every direction of the hemisphere,
+     * the perpendicular ones included, and is cheaper than Sec. 6's bisections. */
+    prox_vec3 d;
+    double v;
+    int other = other_dirs(&c0, &c1, delta, scale, &d, &v);
+    if (other) return separated(d, delta, v, PROX_SAT_OTHER);
+    if (v == 0.0) {
+        /* undecided within tolerance (touching): Sec. 6 on the kinks D.W0 = 0 and D.W1 = 0,
+         * where a lateral contact's separating direction lies exactly */
+        if (perp_test(&c0, &c1, delta, 0.0, &d) && (g = gap(&c0, &c1, delta, d)) > 0.0)
+            return separated(d, delta, g, PROX_SAT_PERP_W0);
+        if (perp_test(&c1, &c0, delta, 0.0, &d) && (g = gap(&c0, &c1, delta, d)) > 0.0)
+            return separated(d, delta, g, PROX_SAT_PERP_W1);
+    }
+    r.value = -v;
+    r.decided_by = PROX_SAT_CERTIFIED;
+    return r;
+}
