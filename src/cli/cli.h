@@ -3,5 +3,6 @@
 #define PROX_CLI_H
 
 int prox_cli_pairs(int argc, char **argv);
+int prox_cli_check(int argc, char **argv);
 
 #endif

@@ -10,6 +10,7 @@ static void usage(FILE *f)
     fprintf(f, "usage: prox <command> [options]\n"
                "commands:\n"
                "  pairs     cylinder pairs on stdin (14 numbers a line) -> distance and proximal points\n"
+               "  check     MCNP deck -> crossing, touching, nested and close bodies (prox check DECK --help)\n"
                "  help      this text\n");
 }
 
@@ -21,6 +22,7 @@ int main(int argc, char **argv)
         return 2;
     }
     if (strcmp(argv[1], "pairs") == 0) return prox_cli_pairs(argc - 1, argv + 1);
+    if (strcmp(argv[1], "check") == 0) return prox_cli_check(argc - 1, argv + 1);
     if (strcmp(argv[1], "help") == 0 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
         usage(stdout);
         return 0;
