@@ -57,6 +57,7 @@ typedef struct prox_pair_result {
     double depth;            ///< SIGNED, RELATION: penetration depth (>= 0)
     prox_vec3 reposition;    ///< SIGNED, RELATION: translation of b that makes the pair touch (0 if disjoint)
     prox_relation relation;  ///< RELATION
+    double clearance;        ///< RELATION, nested pairs: clearance of the inner solid inside the outer one
 } prox_pair_result;
 
 /// One pair query with the ladder of tests. d is the threshold of CLOSER (and of VERDICT when > 0):

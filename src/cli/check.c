@@ -112,7 +112,8 @@ static void write_json_pair(FILE *f, const check_run *run, const prox_scene_pair
     json_vec(f, r->p2);
     fputc(']', f);
     if (r->relation == PROX_REL_A_IN_B || r->relation == PROX_REL_B_IN_A)
-        fprintf(f, ", \"inner\": %ld", r->relation == PROX_REL_A_IN_B ? a->surface : b->surface);
+        fprintf(f, ", \"inner\": %ld, \"clearance\": %.17g", r->relation == PROX_REL_A_IN_B ? a->surface : b->surface,
+                r->clearance);
     if (r->relation == PROX_REL_CROSSING) {
         fprintf(f, ", \"depth\": %.17g, \"reposition\": ", r->depth);
         json_vec(f, r->reposition);
@@ -156,7 +157,7 @@ static void write_table(FILE *f, const check_run *run)
             run->rep.stats.exact);
     if (run->rep.npairs) {
         fprintf(f, "%8s %8s  %-9s %13s %13s  %-34s %-34s %s\n", "a", "b", "relation", "distance", "depth",
-                "point on a", "point on b", "reposition b / inner");
+                "point on a", "point on b", "reposition of b / inner body");
         for (size_t i = 0; i < run->rep.npairs; ++i) {
             const prox_scene_pair *p = &run->rep.pairs[i];
             const prox_pair_result *r = &p->r;
@@ -170,7 +171,8 @@ static void write_table(FILE *f, const check_run *run)
             fmt_vec(p2, sizeof p2, r->p2);
             if (r->relation == PROX_REL_CROSSING) fmt_vec(extra, sizeof extra, r->reposition);
             if (r->relation == PROX_REL_A_IN_B || r->relation == PROX_REL_B_IN_A)
-                snprintf(extra, sizeof extra, "inner %ld", r->relation == PROX_REL_A_IN_B ? sa : sb);
+                snprintf(extra, sizeof extra, "inner %ld, clearance %.6g", r->relation == PROX_REL_A_IN_B ? sa : sb,
+                         r->clearance);
             fprintf(f, "%8ld %8ld  %-9s %13.6g %13.6g  %-34s %-34s %s\n", sa, sb, relation_word(r->relation),
                     r->relation == PROX_REL_DISJOINT ? r->distance : 0.0, r->depth, p1, p2, extra);
         }

@@ -168,11 +168,10 @@ static void relation_stage(prox_pair_result *r, const prox_shape *a, const prox_
     }
     prox_distance_result d = prox_shape_distance(a, b);
     take_distance(r, &d, 1);
-    if (rel.relation != PROX_REL_DISJOINT) {
+    if (rel.relation != PROX_REL_DISJOINT) { /* touching or nested: no depth, no move asked for */
         r->intersect = 1;
         r->distance = 0.0;
-        r->depth = fmax(0.0, -rel.signed_distance);
-        if (rel.relation == PROX_REL_TOUCHING) r->depth = 0.0;
+        if (rel.relation != PROX_REL_TOUCHING) r->clearance = rel.clearance;
     }
 }
 
