@@ -63,7 +63,7 @@ static ld golden(const angfam *F, lv3 x, ld lo, ld hi)
 }
 static ld fam_min(const angfam *F, lv3 x)
 {
-    enum { N = 256 };
+    enum { N = 128 };
     ld v[N], best = 1e300L, step = 2 * (ld)PROX_PI / N;
     for (int i = 0; i < N; ++i) v[i] = fam_eval(F, x, i * step);
     for (int i = 0; i < N; ++i) {
@@ -224,7 +224,7 @@ static void test_point_circle_disk_random(void **st)
 {
     (void)st;
     test_rng r = test_rng_seed(202);
-    for (int i = 0; i < 3000; ++i) {
+    for (int i = 0; i < 2000; ++i) {
         scene s = random_scene(&r, i);
         prox_circle c = random_circle(&r, &s);
         prox_vec3 p = rpt(&r, &s, 3);
@@ -296,7 +296,7 @@ static void test_point_cylsurf_random(void **st)
 {
     (void)st;
     test_rng r = test_rng_seed(303);
-    for (int i = 0; i < 3000; ++i) {
+    for (int i = 0; i < 2000; ++i) {
         scene s = random_scene(&r, i);
         prox_cylsurf cs = {rpt(&r, &s, 1), test_unit(&r), s.scale * test_range(&r, 0, 3), s.scale * test_range(&r, 0.05, 2)};
         if (i % 17 == 0) cs.height = 0;
