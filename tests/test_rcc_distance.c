@@ -322,6 +322,30 @@ static void test_rcc_sweeps(void **state)
     }
 }
 
+/* Regression: nearly coaxial parallel faces.  The radial offset between the face centres was rounding
+ * noise (1e-17) pointing in a random direction, not orthogonal to the axis; normalising it put the rim
+ * point off the face plane and gave 0.00256 instead of 0.000552 (and false overlaps for other pairs). */
+static void test_rcc_regress_coaxial_noise(void **state)
+{
+    (void)state;
+    const double v[2][15] = {
+        {1.6185539341648916, 1.0510924428331601, -0.22996148039726538, 0.01942783563607009, 0.65751705603194688,
+         0.14953412616553852, 1.9142300104284886, 1.6115399951573659, 0.81371219040537368, -0.28394707406378056,
+         0.0069980330875879793, 0.23684193133804998, 0.053863167376563117, 4.6185285173833943,
+         0.00055229592648758929},
+        {0.42268448860848418, -0.75962585519301529, -1.2574525591813548, -0.20576513162979448,
+         0.055533714712153376, 0.090361397751710718, 3.027968302114509, 0.92288725815139649,
+         -0.89462500535030487, -1.4771157307652309, -0.50020170210901349, 0.13499886206878237,
+         0.21966270282214598, 0.32619057954324165, 1.2008945307617758e-06},
+    };
+    for (int k = 0; k < 2; ++k) {
+        prox_rcc a = rcc_of(v[k]), b = rcc_of(v[k] + 7);
+        prox_rcc_result r = prox_rcc_distance(&a, &b);
+        assert_near(r.distance, v[k][14], 1e-12 * prox_rcc_pair_scale(&a, &b));
+        assert_false(r.interfere);
+    }
+}
+
 static void test_rcc_bad_input(void **state)
 {
     (void)state;
@@ -349,6 +373,7 @@ int main(void)
         cmocka_unit_test(test_rcc_containment),
         cmocka_unit_test(test_rcc_point_sets),
         cmocka_unit_test(test_rcc_sweeps),
+        cmocka_unit_test(test_rcc_regress_coaxial_noise),
         cmocka_unit_test(test_rcc_bad_input),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -210,10 +210,12 @@ static void cand_rim_disk(query *q, const cyl *rc, int rend, const cyl *dc, int 
         dirs[1] = prox_v3_neg(e);
         nd = 2;
     } else { /* parallel faces: towards the disk's axis (any point if coaxial) */
-        prox_vec3 g = prox_v3_sub(D, C->c);
-        g = prox_v3_mad(g, -prox_v3_dot(g, C->n), C->n);
+        prox_vec3 g0 = prox_v3_sub(D, C->c);
+        prox_vec3 g = prox_v3_reject(prox_v3_reject(g0, C->n), C->n); /* twice: no residual along n */
         double gl = prox_v3_norm(g);
-        dirs[0] = gl > 0.0 ? prox_v3_scale(g, 1.0 / gl) : C->u;
+        /* A radial offset at rounding level is noise in a random direction: any rim point is then as
+         * good (coaxial faces), so take the frame's u. */
+        dirs[0] = gl > 64.0 * DBL_EPSILON * (prox_v3_norm(g0) + C->r) ? prox_v3_scale(g, 1.0 / gl) : C->u;
         nd = 1;
     }
     for (int i = 0; i < nd; ++i) {
