@@ -4,7 +4,7 @@
  * pass timing every query on its own (clock overhead subtracted) gives the median and p99 ns/query;
  * the figure reported for each statistic is its median over the repeats.
  * Usage: prox_bench [--quick] [--long] [--repeats R] [--filter SUBSTRING] [--csv FILE]
- *                   [--validation DIR] [--list] */
+ *                   [--validation DIR] [--pairs N] [--list]   (--pairs: Agarwal-protocol pairs) */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime, CLOCK_MONOTONIC */
 #include <stdarg.h>
 #include <stdio.h>
@@ -149,7 +149,7 @@ static void usage(void)
 {
     fprintf(stderr,
             "usage: prox_bench [--quick] [--long] [--repeats R] [--filter SUBSTRING] [--csv FILE]\n"
-            "                  [--validation DIR] [--list]\n");
+            "                  [--validation DIR] [--pairs N] [--list]\n");
 }
 
 /* Prints a double or an empty CSV field when NaN. */
@@ -192,7 +192,7 @@ static void print_row(FILE *csv, const bench_case *c, const case_stats *st, int 
 
 int main(int argc, char **argv)
 {
-    bench_opts o = {0, 0, 7, NULL, PROX_BENCH_VALIDATION_DIR};
+    bench_opts o = {0, 0, 7, NULL, PROX_BENCH_VALIDATION_DIR, 0};
     const char *csv_path = NULL;
     int list = 0;
     for (int k = 1; k < argc; ++k) {
@@ -202,6 +202,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[k], "--repeats") && k + 1 < argc) o.repeats = atoi(argv[++k]);
         else if (!strcmp(argv[k], "--filter") && k + 1 < argc) o.filter = argv[++k];
         else if (!strcmp(argv[k], "--csv") && k + 1 < argc) csv_path = argv[++k];
+        else if (!strcmp(argv[k], "--pairs") && k + 1 < argc) o.pairs = atol(argv[++k]);
         else if (!strcmp(argv[k], "--validation") && k + 1 < argc) o.validation_dir = argv[++k];
         else {
             usage();

@@ -41,6 +41,7 @@ typedef struct bench_opts {
     int repeats;      /* >= 5 */
     const char *filter;
     const char *validation_dir;
+    long pairs;       /* Agarwal-protocol pairs (0: 10^6, --quick 2*10^4) */
 } bench_opts;
 
 /* Registers a case (copied); returns it so the caller can add a note or accuracy. */

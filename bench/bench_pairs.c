@@ -22,7 +22,7 @@ const bench_pairs *bench_pairs_agarwal(const bench_opts *o)
     static bench_pairs P; /* built once, lives until exit */
     if (P.n) return &P;
     P.name = "agarwal";
-    P.n = o->quick ? 20000 : 1000000;
+    P.n = o->pairs > 0 ? (size_t)o->pairs : (o->quick ? 20000 : 1000000);
     P.a = bench_xmalloc(P.n * sizeof *P.a);
     P.b = bench_xmalloc(P.n * sizeof *P.b);
     bench_rng r = bench_rng_seed(2016);
