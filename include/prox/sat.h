@@ -39,9 +39,30 @@ typedef struct prox_signed_result {
     prox_vec3 p2;       ///< witness in B; p2 - p1 = sd * normal
 } prox_signed_result;
 
+/// Result of prox_rcc_crosscheck: the closed-form distance (prox_rcc_distance) against the
+/// separating-axis verdict (prox_rcc_sat) and the support-function signed distance.
+typedef struct prox_crosscheck_result {
+    prox_status status;
+    int agree;               ///< 1 when verdicts and (disjoint) distances agree, or the pair is within tol of touching
+    int verdict_agree;       ///< the two intersect verdicts are equal
+    int intersect_distance;  ///< verdict of prox_rcc_distance (its `interfere`)
+    int intersect_sat;       ///< verdict of prox_rcc_sat
+    double distance;         ///< prox_rcc_distance's distance
+    double sd;               ///< prox_rcc_signed_distance's signed distance
+    double sat_value;        ///< prox_rcc_sat's deciding value (gap when separated)
+    double distance_diff;    ///< |distance - max(sd, 0)| (by duality 0 for disjoint pairs)
+    double margin;           ///< |sd| / scale: distance of the pair from touching, relative
+    double scale;            ///< prox_rcc_pair_scale
+    double tol;              ///< absolute tolerance used: 1e-12 x scale + 8 eps x coordinate size
+} prox_crosscheck_result;
+
 /// Eberly's separating-axis verdict for two solid cylinders, certified.
 PROX_API prox_sat_result prox_rcc_sat(const prox_rcc *a, const prox_rcc *b);
 /// Signed distance of two solid cylinders by support-function optimisation (both signs).
 PROX_API prox_signed_result prox_rcc_signed_distance(const prox_rcc *a, const prox_rcc *b);
+
+/// Runs both cylinder methods and reports whether they agree (verdict; distance against the
+/// support-function gap for disjoint pairs), with the margin.
+PROX_API prox_crosscheck_result prox_rcc_crosscheck(const prox_rcc *a, const prox_rcc *b);
 
 #endif
