@@ -40,16 +40,15 @@ static double cl_h(const cl_coef *k, double th, double *dh)
 /* Newton on h from th; returns the iterate with the smallest |h| (steps limited to 0.5 rad). */
 static double cl_polish(const cl_coef *k, double th)
 {
-    double best = th, dh, hb = fabs(cl_h(k, th, &dh));
+    double dh, h = cl_h(k, th, &dh), best = th, hb = fabs(h);
     for (int it = 0; it < 12 && hb > 0.0; ++it) {
-        double h = cl_h(k, th, &dh);
         if (!(fabs(dh) > 0.0)) break;
         double step = h / dh;
         if (!(fabs(step) <= 0.5)) break;
         th -= step;
-        double hn = fabs(cl_h(k, th, NULL));
-        if (hn < hb) {
-            hb = hn;
+        h = cl_h(k, th, &dh); /* one evaluation per iteration: value and derivative */
+        if (fabs(h) < hb) {
+            hb = fabs(h);
             best = th;
         }
         if (fabs(step) <= 4.0 * DBL_EPSILON * (1.0 + fabs(th))) break;
