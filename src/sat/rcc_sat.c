@@ -25,6 +25,8 @@
 #include "prox/distance.h"
 #include "sup_engine.h"
 
+#include <float.h>
+
 #define SAT_REL_TOL 1e-13
 #define SAT_MAX_IT 100
 
@@ -34,10 +36,23 @@ typedef struct sat_cyl {
     double r, h;
 } sat_cyl;
 
+/* Validation with a fast path (hypot is slow): finite data, r > 0 and |axis|^2 a normal number
+ * settle it; anything else goes to prox_rcc_validate for the exact status. */
+static prox_status fast_validate(const prox_rcc *x)
+{
+    if (x && prox_v3_isfinite(x->base) && prox_v3_isfinite(x->axis) && isfinite(x->radius) && x->radius > 0.0) {
+        double h2 = prox_v3_norm2(x->axis);
+        if (h2 >= DBL_MIN && h2 <= DBL_MAX) return PROX_OK;
+    }
+    return prox_rcc_validate(x);
+}
+
+/* Cylinder in centred form (axis lengths of normal range: sqrt(|a|^2) is safe). */
 static sat_cyl sat_make(const prox_rcc *x)
 {
     sat_cyl s;
-    s.h = prox_v3_norm(x->axis);
+    double h2 = prox_v3_norm2(x->axis);
+    s.h = h2 >= DBL_MIN && h2 <= DBL_MAX ? sqrt(h2) : prox_v3_norm(x->axis);
     s.w = prox_v3_scale(x->axis, 1.0 / s.h);
     s.c = prox_v3_mad(x->base, 0.5, x->axis);
     s.r = x->radius;
@@ -67,7 +82,7 @@ static prox_vec3 pc(const sat_cyl *s, prox_vec3 d)
 /* Gap along the unit direction of d: -f(d)/|d|; > 0 separates. */
 static double gap(const sat_cyl *a, const sat_cyl *b, prox_vec3 delta, prox_vec3 d)
 {
-    double n = prox_v3_norm(d);
+    double n2 = prox_v3_norm2(d), n = n2 >= DBL_MIN && n2 <= DBL_MAX ? sqrt(n2) : prox_v3_norm(d);
     prox_vec3 u = prox_v3_scale(d, 1.0 / n);
     return fabs(prox_v3_dot(u, delta)) - hc(a, u) - hc(b, u);
 }
@@ -77,7 +92,8 @@ static prox_sat_result separated(prox_vec3 d, prox_vec3 delta, double value, pro
     prox_sat_result r = {0};
     r.status = PROX_OK;
     r.intersect = 0;
-    d = prox_v3_normalize(d);
+    double n2 = prox_v3_norm2(d);
+    d = n2 >= DBL_MIN && n2 <= DBL_MAX ? prox_v3_scale(d, 1.0 / sqrt(n2)) : prox_v3_normalize(d);
     r.direction = prox_v3_dot(d, delta) < 0.0 ? prox_v3_neg(d) : d; /* from A towards B */
     r.value = value;
     r.decided_by = by;
@@ -209,7 +225,7 @@ static int find_portal(const sat_k *k, prox_vec3 p[3])
  * certified lower bound of G, > 0, or 0 when undecided within the tolerance). */
 static int other_dirs(const sat_cyl *a, const sat_cyl *b, prox_vec3 delta, double scale, prox_vec3 *dir, double *value)
 {
-    double L = prox_v3_norm(delta);
+    double L = sqrt(prox_v3_norm2(delta));
     sat_k k = {a, b, prox_v3_scale(delta, 1.0 / L), {0, 0, 0}, {0, 0, 0}};
     k.u = prox_v3_any_perp(k.n);
     k.v = prox_v3_cross(k.n, k.u);
@@ -223,7 +239,7 @@ static int other_dirs(const sat_cyl *a, const sat_cyl *b, prox_vec3 delta, doubl
         prox_vec3 N = prox_v3_cross(prox_v3_sub(p[1], p[0]), prox_v3_sub(p[2], p[0]));
         double nn = prox_v3_dot(N, k.n);
         if (nn < 0.0) { N = prox_v3_neg(N); nn = -nn; }
-        if (!(nn > 1e-300 * prox_v3_norm(N))) N = k.n, nn = 1.0; /* degenerate portal: use the pole */
+        if (!(nn > 1e-300 * sqrt(prox_v3_norm2(N)))) N = k.n, nn = 1.0; /* degenerate portal: use the pole */
         else t_low = fmax(t_low, prox_v3_dot(N, p[0]) / nn);
         if (t_low > L) { *value = t_low - L; return 0; } /* certified: no separating direction */
         double tu = kh(&k, N) / nn;
@@ -247,12 +263,12 @@ static int other_dirs(const sat_cyl *a, const sat_cyl *b, prox_vec3 delta, doubl
 PROX_API prox_sat_result prox_rcc_sat(const prox_rcc *a, const prox_rcc *b)
 {
     prox_sat_result r = {0};
-    r.status = prox_rcc_validate(a);
-    if (r.status == PROX_OK) r.status = prox_rcc_validate(b);
+    r.status = fast_validate(a);
+    if (r.status == PROX_OK) r.status = fast_validate(b);
     if (r.status != PROX_OK) return r;
     sat_cyl c0 = sat_make(a), c1 = sat_make(b);
     prox_vec3 delta = prox_v3_sub(c1.c, c0.c);
-    double scale = prox_rcc_pair_scale(a, b), g;
+    double g;
     r.intersect = 1;
     if (prox_v3_norm2(delta) == 0.0) { r.decided_by = PROX_SAT_CERTIFIED; return r; } /* same centre */
     /* Sec. 5: the axes */
@@ -274,6 +290,7 @@ PROX_API prox_sat_result prox_rcc_sat(const prox_rcc *a, const prox_rcc *b)
      * the perpendicular ones included, and is cheaper than Sec. 6's bisections. */
     prox_vec3 d;
     double v;
+    double scale = fmax(sqrt(prox_v3_norm2(delta)), fmax(fmax(c0.h, c1.h), fmax(c0.r, c1.r)));
     int other = other_dirs(&c0, &c1, delta, scale, &d, &v);
     if (other) return separated(d, delta, v, PROX_SAT_OTHER);
     if (v == 0.0) {

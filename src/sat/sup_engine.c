@@ -442,15 +442,61 @@ static void witnesses(const sup_body *a, const sup_body *b, prox_vec3 n, double 
     *p2 = y;
 }
 
-prox_signed_result sup_signed_distance(const sup_body *a, const sup_body *b)
+/* The result from the best direction found. */
+static prox_signed_result finish(const sup_search *s)
+{
+    prox_signed_result res = {0};
+    res.status = PROX_OK;
+    res.sd = -s->best_phi;
+    res.normal = s->best_d;
+    witnesses(s->a, s->b, s->best_d, res.sd, &res.p1, &res.p2);
+    return res;
+}
+
+/* Minimum along the ridge D.w = 0 near d (a bracket of +-0.1 rad around d's projection). */
+static void ridge_local(sup_search *s, prox_vec3 w, prox_vec3 d)
+{
+    prox_vec3 p = prox_v3_mad(d, -prox_v3_dot(d, w), w);
+    double pn = sqrt(prox_v3_norm2(p));
+    if (!(pn > 0.0)) return;
+    prox_vec3 u = prox_v3_scale(p, 1.0 / pn), v = prox_v3_cross(w, u);
+    consider(s, u);
+    ridge_refine(s, u, v, -0.1, 0.1, 0.0);
+}
+
+/* Disjoint pairs (some unit D already has phi < 0): the problem is quasi-convex, so a local
+ * search from the best direction is global. Newton in the cell, then the ridges it came close
+ * to (a lateral contact's minimiser lies exactly on one), then Newton again. */
+static void search_disjoint(sup_search *s, const prox_vec3 *r, int n)
+{
+    cell_newton(s, s->best_d);
+    for (int pass = 0; pass < 2; ++pass) {
+        prox_vec3 d0 = s->best_d;
+        for (int i = 0; i < n; ++i)
+            if (fabs(prox_v3_dot(d0, r[i])) < 0.05) ridge_local(s, r[i], d0);
+        if (prox_v3_dot(d0, s->best_d) == 1.0) break;
+        cell_newton(s, s->best_d);
+    }
+}
+
+prox_signed_result sup_signed_distance(const sup_body *a, const sup_body *b, const prox_vec3 *hint)
 {
     sup_search s = {.a = a, .b = b, .delta = prox_v3_sub(b->c, a->c), .best_phi = INFINITY};
     s.scale = fmax(prox_v3_norm(s.delta), fmax(a->size, b->size));
     s.best_d = prox_v3(0, 0, 1);
+    if (hint) consider(&s, *hint);
     search_points(&s);
     prox_vec3 r[6];
     int n = sup_ridges(a, r);
     n += sup_ridges(b, r + n);
+    if (s.best_phi < 0.0) {
+        /* disjoint: local search, then every ridge (a stalled local search ends on one) */
+        search_disjoint(&s, r, n);
+        for (int i = 0; i < n; ++i) search_ridge(&s, r[i]);
+        cell_newton(&s, s.best_d);
+        search_disjoint(&s, r, n);
+        return finish(&s);
+    }
     for (int i = 0; i < n; ++i) search_ridge(&s, r[i]);
     search_samples(&s);
     prox_vec3 starts[SUP_TOPK];
@@ -458,11 +504,5 @@ prox_signed_result sup_signed_distance(const sup_body *a, const sup_body *b)
     for (int i = 0; i < ns; ++i) starts[i] = s.kd[i];
     for (int i = 0; i < ns; ++i) cell_newton(&s, starts[i]);
     cell_newton(&s, s.best_d);
-
-    prox_signed_result res = {0};
-    res.status = PROX_OK;
-    res.sd = -s.best_phi;
-    res.normal = s.best_d;
-    witnesses(a, b, s.best_d, res.sd, &res.p1, &res.p2);
-    return res;
+    return finish(&s);
 }

@@ -5,6 +5,8 @@
 #ifndef PROX_SAT_SUP_ENGINE_H
 #define PROX_SAT_SUP_ENGINE_H
 
+#include <stddef.h>
+
 #include "prox/sat.h"
 #include "prox/shapes.h"
 
@@ -28,7 +30,8 @@ double sup_hc(const sup_body *b, prox_vec3 d);
 /* Centred support point: a point x of (body - c) with d.x = hc(d); sign(0) picks the face centre. */
 prox_vec3 sup_pc(const sup_body *b, prox_vec3 d);
 
-/* Signed distance of two bodies (see the file comment); status is always PROX_OK. */
-prox_signed_result sup_signed_distance(const sup_body *a, const sup_body *b);
+/* Signed distance of two bodies (see the file comment); status is always PROX_OK. hint (may be
+ * NULL): a direction to try first, e.g. a separating direction from the SAT. */
+prox_signed_result sup_signed_distance(const sup_body *a, const sup_body *b, const prox_vec3 *hint);
 
 #endif

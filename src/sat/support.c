@@ -35,5 +35,5 @@ PROX_API prox_signed_result prox_shape_signed_distance_support(const prox_shape 
     if (r.status == PROX_OK) r.status = prox_shape_validate(b);
     if (r.status != PROX_OK) return r;
     sup_body ba = sup_body_make(a), bb = sup_body_make(b);
-    return sup_signed_distance(&ba, &bb);
+    return sup_signed_distance(&ba, &bb, NULL);
 }
