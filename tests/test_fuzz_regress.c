@@ -1,0 +1,37 @@
+/* Regression tests for the inputs the fuzzers (fuzz/) found. Each test opens with the bug.
+ * Contract (issue 7 section 3): valid shapes get PROX_OK with finite answers, never NaN. */
+#include "test_util.h"
+
+#include "prox/query.h"
+
+/* fuzz_queries crash-6fd5bd04: an RPP whose extents are subnormal (~3.5e-310) against a sphere
+ * whose centre and radius are subnormal: both validate, yet prox_shape_distance answered PROX_OK
+ * with a NaN distance and NaN points (and prox_shape_signed_distance a NaN sd). */
+static void test_fuzz_subnormal_rpp_sph(void **state)
+{
+    (void)state;
+    double t = 3.47328271065196e-310, c = 3.4766779039175e-310, r = 3.47837550055027e-310;
+    prox_rpp box = {0, t, 0, t, 0, t};
+    prox_sph sph = {prox_v3(c, r, c), r};
+    prox_shape a = prox_shape_from_rpp(box), b = prox_shape_from_sph(sph);
+    assert_int_equal(prox_shape_validate(&a), PROX_OK);
+    assert_int_equal(prox_shape_validate(&b), PROX_OK);
+    prox_distance_result d = prox_shape_distance(&a, &b);
+    if (d.status == PROX_OK) {
+        assert_true(isfinite(d.distance) && d.distance >= 0);
+        assert_true(prox_v3_isfinite(d.p1) && prox_v3_isfinite(d.p2));
+    }
+    prox_signed_result g = prox_shape_signed_distance(&a, &b);
+    if (g.status == PROX_OK) assert_true(isfinite(g.sd));
+    prox_contain_result k = prox_shape_contains(&a, &b);
+    if (k.status == PROX_OK) assert_false(isnan(k.clearance));
+}
+
+int main(void)
+{
+    test_init();
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_fuzz_subnormal_rpp_sph),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
