@@ -1,0 +1,382 @@
+/* Generic queries (query.h) on seeded random pairs of every family (BOX/RPP, RCC, SPH), against an
+ * independent brute force written here in long double:
+ *  - distance: alternating projections onto the two solids (von Neumann) give an upper bound U and the
+ *    support-function gap along their direction a lower bound L; the answer must lie in [L, U] and equal
+ *    U when the bracket is tight;
+ *  - penetration depth: min over unit D of h_A(D) + h_B(-D), dense directions plus pattern search;
+ *  - reposition: after the move the distance equals the margin; relation and test agree with these. */
+#include "test_util.h"
+#include "prox/query.h"
+#include "prox/support.h"
+
+typedef long double ld;
+typedef struct lv { ld x, y, z; } lv;
+static lv L3(prox_vec3 v) { lv r = {v.x, v.y, v.z}; return r; }
+static lv lsub(lv a, lv b) { lv r = {a.x - b.x, a.y - b.y, a.z - b.z}; return r; }
+static lv ladd(lv a, lv b) { lv r = {a.x + b.x, a.y + b.y, a.z + b.z}; return r; }
+static lv lsc(lv a, ld s) { lv r = {a.x * s, a.y * s, a.z * s}; return r; }
+static ld ldot(lv a, lv b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static ld lnorm(lv a) { return sqrtl(ldot(a, a)); }
+
+/* Projection of x onto a solid (brute-force side, long double). */
+static lv proj(const prox_shape *s, lv x)
+{
+    if (s->kind == PROX_SHAPE_SPH) {
+        lv d = lsub(x, L3(s->u.sph.center));
+        ld n = lnorm(d);
+        return n <= s->u.sph.radius ? x : ladd(L3(s->u.sph.center), lsc(d, s->u.sph.radius / n));
+    }
+    if (s->kind == PROX_SHAPE_RCC) {
+        lv w = L3(s->u.rcc.axis), b = L3(s->u.rcc.base);
+        ld h = lnorm(w);
+        w = lsc(w, 1 / h);
+        lv d = lsub(x, b);
+        ld t = ldot(d, w);
+        lv rad = lsub(d, lsc(w, t));
+        ld rho = lnorm(rad);
+        if (t < 0) t = 0;
+        if (t > h) t = h;
+        if (rho > s->u.rcc.radius) rad = lsc(rad, s->u.rcc.radius / rho);
+        return ladd(ladd(b, lsc(w, t)), rad);
+    }
+    prox_box bx = s->kind == PROX_SHAPE_RPP ? prox_rpp_to_box(&s->u.rpp) : s->u.box;
+    lv p = L3(bx.corner), d = lsub(x, p);
+    for (int k = 0; k < 3; ++k) {
+        lv e = L3(bx.edge[k]);
+        ld l2 = ldot(e, e), t = ldot(d, e) / l2;
+        if (t < 0) t = 0;
+        if (t > 1) t = 1;
+        p = ladd(p, lsc(e, t));
+    }
+    return p;
+}
+
+/* Support function (brute-force side). */
+static ld supp(const prox_shape *s, lv d)
+{
+    if (s->kind == PROX_SHAPE_SPH) return ldot(d, L3(s->u.sph.center)) + s->u.sph.radius * lnorm(d);
+    if (s->kind == PROX_SHAPE_RCC) {
+        lv w = L3(s->u.rcc.axis), b = L3(s->u.rcc.base);
+        ld h = lnorm(w), dw = ldot(d, w) / h;
+        lv perp = lsub(d, lsc(w, dw / h));
+        ld base = ldot(d, b) + (dw > 0 ? dw * h : 0);
+        return base + s->u.rcc.radius * lnorm(perp);
+    }
+    prox_box bx = s->kind == PROX_SHAPE_RPP ? prox_rpp_to_box(&s->u.rpp) : s->u.box;
+    ld v = ldot(d, L3(bx.corner));
+    for (int k = 0; k < 3; ++k) {
+        ld c = ldot(d, L3(bx.edge[k]));
+        if (c > 0) v += c;
+    }
+    return v;
+}
+
+static ld dist_to(const prox_shape *s, lv x) { return lnorm(lsub(x, proj(s, x))); }
+
+/* Alternating projections: upper bound U, points p (A), q (B). */
+static ld brute_distance(const prox_shape *a, const prox_shape *b, lv *p, lv *q)
+{
+    lv x = L3(prox_shape_center(b));
+    for (int it = 0; it < 4000; ++it) {
+        *p = proj(a, x);
+        lv nq = proj(b, *p);
+        ld change = lnorm(lsub(nq, x));
+        x = nq;
+        if (it > 10 && change < 1e-24L) break;
+    }
+    *q = x;
+    return lnorm(lsub(*p, *q));
+}
+
+/* Gap -h_B(-n) - h_A(n) along n (lower bound on the distance). */
+static ld gap(const prox_shape *a, const prox_shape *b, lv n)
+{
+    ld nn = lnorm(n);
+    if (!(nn > 0)) return -INFINITY;
+    n = lsc(n, 1 / nn);
+    return -supp(b, lsc(n, -1)) - supp(a, n);
+}
+
+static ld phi(const prox_shape *a, const prox_shape *b, lv d) { return supp(a, d) + supp(b, lsc(d, -1)); }
+
+/* Kink axes of a support function: h is smooth off the great circles D.k = 0 (box edges, cylinder
+ * axis) and off the cylinder's poles. */
+static int kinks(const prox_shape *s, lv k[3], int *pole)
+{
+    *pole = 0;
+    if (s->kind == PROX_SHAPE_SPH) return 0;
+    if (s->kind == PROX_SHAPE_RCC) {
+        k[0] = lsc(L3(s->u.rcc.axis), 1 / lnorm(L3(s->u.rcc.axis)));
+        *pole = 1;
+        return 1;
+    }
+    prox_box bx = s->kind == PROX_SHAPE_RPP ? prox_rpp_to_box(&s->u.rpp) : s->u.box;
+    for (int i = 0; i < 3; ++i) k[i] = lsc(L3(bx.edge[i]), 1 / lnorm(L3(bx.edge[i])));
+    return 3;
+}
+
+static lv lcross(lv a, lv b) { lv r = {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; return r; }
+static lv lunit(lv a) { return lsc(a, 1 / lnorm(a)); }
+
+/* Pattern search from d (smooth regions). */
+static ld pattern(const prox_shape *a, const prox_shape *b, lv d, ld f)
+{
+    ld step = 0.02L;
+    for (int iter = 0; iter < 2000 && step > 1e-14L; ++iter) { /* capped: ridges are searched in 1-D */
+        int improved = 0;
+        lv t1 = lunit(fabsl(d.x) < 0.6L ? (lv){0, d.z, -d.y} : (lv){d.z, 0, -d.x}), t2 = lcross(d, t1);
+        for (int m = 0; m < 16; ++m) {
+            ld ang = m * 0.39269908169872414L;
+            lv c = lunit(ladd(d, ladd(lsc(t1, step * cosl(ang)), lsc(t2, step * sinl(ang)))));
+            ld fc = phi(a, b, c);
+            if (fc < f) f = fc, d = c, improved = 1;
+        }
+        if (!improved) step *= 0.5L;
+    }
+    return f;
+}
+
+/* Minimum of phi on the great circle orthogonal to k: dense samples and golden sections. */
+static ld on_circle(const prox_shape *a, const prox_shape *b, lv k)
+{
+    lv p = lunit(fabsl(k.x) < 0.6L ? (lv){0, k.z, -k.y} : (lv){k.z, 0, -k.x}), q = lcross(k, p);
+    enum { N = 720 };
+    ld best = INFINITY;
+    for (int i = 0; i < N; ++i) {
+        ld th = 2 * 3.14159265358979323846L * i / N;
+        ld f = phi(a, b, ladd(lsc(p, cosl(th)), lsc(q, sinl(th))));
+        ld fl = phi(a, b, ladd(lsc(p, cosl(th - 0.0087266L)), lsc(q, sinl(th - 0.0087266L))));
+        ld fr = phi(a, b, ladd(lsc(p, cosl(th + 0.0087266L)), lsc(q, sinl(th + 0.0087266L))));
+        if (f > fl || f > fr) { if (f < best) best = f; continue; }
+        ld lo = th - 0.0087266L, hi = th + 0.0087266L, g = 0.6180339887498949L;
+        for (int it = 0; it < 80; ++it) {
+            ld x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+            ld f1 = phi(a, b, ladd(lsc(p, cosl(x1)), lsc(q, sinl(x1))));
+            ld f2 = phi(a, b, ladd(lsc(p, cosl(x2)), lsc(q, sinl(x2))));
+            if (f1 < f2) hi = x2; else lo = x1;
+            if (f1 < best) best = f1;
+            if (f2 < best) best = f2;
+        }
+    }
+    return best;
+}
+
+/* Brute-force depth: min over unit D of h_A(D) + h_B(-D): Fibonacci directions refined by pattern
+ * search (smooth parts), every kink great circle searched in 1-D, every intersection of kink circles
+ * and every cylinder pole evaluated. */
+static ld brute_depth(const prox_shape *a, const prox_shape *b)
+{
+    enum { N = 2000 };
+    ld best[4] = {INFINITY, INFINITY, INFINITY, INFINITY};
+    lv bd[4];
+    for (int i = 0; i < N; ++i) {
+        ld z = 1 - (2.0L * i + 1) / N, r = sqrtl(1 - z * z), th = 2.399963229728653L * i;
+        lv d = {r * cosl(th), r * sinl(th), z};
+        ld f = phi(a, b, d);
+        for (int k = 0; k < 4; ++k)
+            if (f < best[k]) {
+                for (int m = 3; m > k; --m) best[m] = best[m - 1], bd[m] = bd[m - 1];
+                best[k] = f, bd[k] = d;
+                break;
+            }
+    }
+    ld res = INFINITY;
+    for (int k = 0; k < 4; ++k) res = fminl(res, pattern(a, b, bd[k], best[k]));
+    lv K[6];
+    int pa, pb, na = kinks(a, K, &pa), nb = kinks(b, K + na, &pb), n = na + nb;
+    for (int i = 0; i < n; ++i) {
+        res = fminl(res, on_circle(a, b, K[i]));
+        for (int j = i + 1; j < n; ++j) {
+            lv c = lcross(K[i], K[j]);
+            if (lnorm(c) < 1e-9L) continue;
+            c = lunit(c);
+            res = fminl(res, fminl(phi(a, b, c), phi(a, b, lsc(c, -1))));
+        }
+    }
+    if (pa) res = fminl(res, fminl(phi(a, b, K[0]), phi(a, b, lsc(K[0], -1))));
+    if (pb) res = fminl(res, fminl(phi(a, b, K[na]), phi(a, b, lsc(K[na], -1))));
+    return res;
+}
+
+/* Random shapes of each kind (kind 0 box, 1 rcc, 2 sph, 3 rpp) around the origin. */
+static prox_shape rand_shape(test_rng *g, int kind, double spread)
+{
+    prox_vec3 c = prox_v3(test_range(g, -spread, spread), test_range(g, -spread, spread), test_range(g, -spread, spread));
+    if (kind == 0) {
+        test_rot R = test_random_rot(g);
+        prox_box b;
+        double len[3];
+        for (int k = 0; k < 3; ++k) len[k] = test_range(g, 0.1, 3.0);
+        b.edge[0] = prox_v3_scale(test_rot_apply(&R, prox_v3(1, 0, 0)), len[0]);
+        b.edge[1] = prox_v3_scale(test_rot_apply(&R, prox_v3(0, 1, 0)), len[1]);
+        b.edge[2] = prox_v3_scale(test_rot_apply(&R, prox_v3(0, 0, 1)), len[2]);
+        b.corner = prox_v3_sub(c, prox_v3_scale(prox_v3_add(prox_v3_add(b.edge[0], b.edge[1]), b.edge[2]), 0.5));
+        return prox_shape_from_box(b);
+    }
+    if (kind == 1) {
+        prox_rcc r;
+        r.axis = prox_v3_scale(test_unit(g), test_range(g, 0.1, 3.0));
+        r.base = prox_v3_mad(c, -0.5, r.axis);
+        r.radius = test_range(g, 0.05, 1.5);
+        return prox_shape_from_rcc(r);
+    }
+    if (kind == 2) {
+        prox_sph s = {c, test_range(g, 0.05, 1.5)};
+        return prox_shape_from_sph(s);
+    }
+    prox_rpp p;
+    double w[3];
+    for (int k = 0; k < 3; ++k) w[k] = test_range(g, 0.1, 3.0);
+    p.xmin = c.x - w[0] / 2, p.xmax = c.x + w[0] / 2;
+    p.ymin = c.y - w[1] / 2, p.ymax = c.y + w[1] / 2;
+    p.zmin = c.z - w[2] / 2, p.zmax = c.z + w[2] / 2;
+    return prox_shape_from_rpp(p);
+}
+
+/* One random family: kinds ka, kb; n pairs. */
+static void run_family(int ka, int kb, int n, uint64_t seed)
+{
+    test_rng g = test_rng_seed(seed);
+    int tight = 0, disjoint = 0, overl = 0;
+    double worst = 0, worst_depth = 0;
+    for (int i = 0; i < n; ++i) {
+        prox_shape a = rand_shape(&g, ka, 2.5), b = rand_shape(&g, kb, 2.5);
+        double S = prox_shape_pair_scale(&a, &b), tol = 1e-12 * S;
+        prox_distance_result d = prox_shape_distance(&a, &b);
+        assert_int_equal(d.status, PROX_OK);
+        lv p, q;
+        ld U = brute_distance(&a, &b, &p, &q);
+        prox_test_result t = prox_shape_test(&a, &b);
+        assert_int_equal(t.status, PROX_OK);
+        assert_int_equal(t.intersect, d.intersect);
+        /* witnesses lie on their solids */
+        assert_true(dist_to(&a, L3(d.p1)) <= 4 * tol);
+        assert_true(dist_to(&b, L3(d.p2)) <= 4 * tol);
+        if (d.intersect) {
+            ++overl;
+            /* the common point lies in both solids (checked above with the brute projections): proof */
+            assert_true(dist_to(&b, L3(d.p1)) <= 4 * tol);
+            /* depth against the brute force */
+            prox_signed_result s = prox_shape_signed_distance(&a, &b);
+            assert_int_equal(s.status, PROX_OK);
+            ld depth = brute_depth(&a, &b);
+            assert_near(-s.sd, (double)depth, 1e-9 * S);
+            if (fabs(s.sd + (double)depth) > worst_depth) worst_depth = fabs(s.sd + (double)depth);
+            /* reposition: after the move the distance is the margin */
+            double margin = 0.1 * S;
+            prox_reposition_result rp = prox_shape_reposition(&a, &b, margin);
+            assert_int_equal(rp.status, PROX_OK);
+            assert_true(rp.moved);
+            prox_shape b2 = prox_shape_translate(&b, rp.translation);
+            prox_distance_result d2 = prox_shape_distance(&a, &b2);
+            assert_false(d2.intersect);
+            assert_near(d2.distance, margin, 1e-9 * S);
+            prox_relation_result rel = prox_shape_relation(&a, &b, -1);
+            assert_int_equal(rel.status, PROX_OK);
+            assert_true(rel.relation != PROX_REL_DISJOINT);
+            continue;
+        }
+        ++disjoint;
+        assert_true(d.distance > 0);
+        assert_near(prox_v3_dist(d.p1, d.p2), d.distance, 4 * tol);
+        ld Lb = gap(&a, &b, lsub(q, p));
+        ld Ls = gap(&a, &b, lsub(L3(d.p2), L3(d.p1)));
+        if (Ls > Lb) Lb = Ls;
+        assert_true(d.distance <= U + tol);   /* never above an attained distance */
+        assert_true(d.distance >= Lb - tol);  /* never below a proven lower bound */
+        if (U - Lb <= tol) {
+            ++tight;
+            assert_near(d.distance, (double)U, tol);
+        }
+        if (fabs(d.distance - (double)Ls) > worst) worst = fabs(d.distance - (double)Ls);
+        prox_signed_result s = prox_shape_signed_distance(&a, &b);
+        assert_near(s.sd, d.distance, tol);
+        prox_relation_result rel = prox_shape_relation(&a, &b, -1);
+        assert_int_equal(rel.relation, d.distance > rel.tol ? PROX_REL_DISJOINT : PROX_REL_TOUCHING);
+    }
+    print_message("family %d-%d: %d disjoint (%d with a tight brute bracket), %d overlapping; "
+                  "max |d - certificate| %.3g, max depth error %.3g\n",
+                  ka, kb, disjoint, tight, overl, worst, worst_depth);
+    assert_true(disjoint > n / 5 && overl > n / 10);
+    assert_true(tight > disjoint / 2); /* the strict comparison ran on most disjoint pairs */
+}
+
+static void test_random_box_box(void **st) { (void)st; run_family(0, 0, 1500, 11); }
+static void test_random_box_rpp(void **st) { (void)st; run_family(3, 0, 500, 12); }
+static void test_random_box_sph(void **st) { (void)st; run_family(0, 2, 1500, 13); }
+static void test_random_sph_box(void **st) { (void)st; run_family(2, 3, 500, 14); }
+static void test_random_sph_sph(void **st) { (void)st; run_family(2, 2, 1500, 15); }
+static void test_random_rcc_sph(void **st) { (void)st; run_family(1, 2, 1500, 16); }
+static void test_random_sph_rcc(void **st) { (void)st; run_family(2, 1, 500, 17); }
+static void test_random_box_rcc(void **st) { (void)st; run_family(0, 1, 1500, 18); }
+static void test_random_rcc_box(void **st) { (void)st; run_family(1, 3, 500, 19); }
+
+/* Invalid shapes give their named status from every generic query. */
+static void test_invalid_shapes(void **st)
+{
+    (void)st;
+    prox_sph good = {{0, 0, 0}, 1}, bad = {{0, 0, 0}, -1};
+    prox_shape a = prox_shape_from_sph(good), b = prox_shape_from_sph(bad);
+    assert_int_equal(prox_shape_distance(&a, &b).status, PROX_EINVAL_RADIUS);
+    assert_int_equal(prox_shape_signed_distance(&b, &a).status, PROX_EINVAL_RADIUS);
+    assert_int_equal(prox_shape_test(&a, &b).status, PROX_EINVAL_RADIUS);
+    assert_int_equal(prox_shape_contains(&a, &b).status, PROX_EINVAL_RADIUS);
+    assert_int_equal(prox_shape_relation(&a, &b, -1).status, PROX_EINVAL_RADIUS);
+    assert_int_equal(prox_shape_reposition(&a, &b, 0.1).status, PROX_EINVAL_RADIUS);
+    prox_shape k = a;
+    k.kind = (prox_shape_kind)42;
+    assert_int_equal(prox_shape_distance(&a, &k).status, PROX_EINVAL_SHAPE_KIND);
+    prox_rpp rp = {0, 1, 0, 1, 1, 0};
+    prox_shape r = prox_shape_from_rpp(rp);
+    assert_int_equal(prox_shape_distance(&r, &a).status, PROX_EINVAL_RPP_BOUNDS);
+    prox_box bx = {{0, 0, 0}, {{1, 0, 0}, {1, 1, 0}, {0, 0, 1}}};
+    prox_shape x = prox_shape_from_box(bx);
+    assert_int_equal(prox_shape_test(&x, &a).status, PROX_EINVAL_BOX_ORTHO);
+    prox_rcc nanc = {{0, 0, NAN}, {0, 0, 1}, 1};
+    prox_shape c = prox_shape_from_rcc(nanc);
+    assert_int_equal(prox_shape_signed_distance(&a, &c).status, PROX_EINVAL_NONFINITE);
+    assert_int_equal(prox_shape_reposition(&a, &a, -1.0).status, PROX_EINVAL_ARG);
+    assert_int_equal(prox_shape_distance(NULL, &a).status, PROX_EINVAL_ARG);
+}
+
+/* Relation: the four outcomes on hand-made pairs, and which one is inner. */
+static void test_relation_cases(void **st)
+{
+    (void)st;
+    prox_rpp big = {-2, 2, -2, 2, -2, 2}, unit = {0, 1, 0, 1, 0, 1}, touch = {1, 2, 0, 1, 0, 1}, far = {3, 4, 0, 1, 0, 1};
+    prox_shape B = prox_shape_from_rpp(big), U = prox_shape_from_rpp(unit), T = prox_shape_from_rpp(touch),
+               F = prox_shape_from_rpp(far);
+    prox_sph s = {{1, 0.5, 0.5}, 0.3};
+    prox_shape S = prox_shape_from_sph(s);
+    assert_int_equal(prox_shape_relation(&U, &B, -1).relation, PROX_REL_A_IN_B);
+    assert_int_equal(prox_shape_relation(&B, &U, -1).relation, PROX_REL_B_IN_A);
+    assert_int_equal(prox_shape_relation(&U, &T, -1).relation, PROX_REL_TOUCHING);
+    assert_int_equal(prox_shape_relation(&U, &F, -1).relation, PROX_REL_DISJOINT);
+    assert_int_equal(prox_shape_relation(&U, &S, -1).relation, PROX_REL_CROSSING);
+    prox_relation_result r = prox_shape_relation(&S, &B, -1);
+    assert_int_equal(r.relation, PROX_REL_A_IN_B);
+    assert_near(r.clearance, 0.7, 1e-15);
+    /* already clear by more than the margin: no move */
+    prox_reposition_result rp = prox_shape_reposition(&U, &F, 0.5);
+    assert_false(rp.moved);
+    assert_near(rp.signed_distance, 2.0, 1e-15);
+    /* touching, margin 0.25: moved 0.25 along +x */
+    rp = prox_shape_reposition(&U, &T, 0.25);
+    assert_true(rp.moved);
+    assert_near(rp.translation.x, 0.25, 1e-15);
+    assert_near(rp.translation.y, 0.0, 1e-15);
+}
+
+int main(void)
+{
+    test_init();
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_random_box_box), cmocka_unit_test(test_random_box_rpp),
+        cmocka_unit_test(test_random_box_sph), cmocka_unit_test(test_random_sph_box),
+        cmocka_unit_test(test_random_sph_sph), cmocka_unit_test(test_random_rcc_sph),
+        cmocka_unit_test(test_random_sph_rcc), cmocka_unit_test(test_random_box_rcc),
+        cmocka_unit_test(test_random_rcc_box), cmocka_unit_test(test_invalid_shapes),
+        cmocka_unit_test(test_relation_cases),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
