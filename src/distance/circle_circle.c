@@ -106,6 +106,14 @@ static double cc_polish(const cc_prob *p, double th, cc_eval *out)
     return th;
 }
 
+/* Local refinement used by the RCC-RCC fast path: safeguarded Newton on g'/2 from th0. */
+double prox_circle_circle_local(const prox_fcircle *a, const prox_fcircle *b, double th0)
+{
+    cc_prob p = cc_make(a, b);
+    cc_eval e;
+    return cc_polish(&p, th0, &e);
+}
+
 /* Quadratic in t for k0 + kc cos + ks sin, times (1 + t^2). */
 static void cc_lin(double k0, double kc, double ks, double q[3])
 {
@@ -182,14 +190,14 @@ static int cc_axis_points(const cc_prob *p, double ax[2])
 {
     if (fabs(p->nz) > 1e-8) { /* the axis crosses a's plane at one point */
         double s = -p->cz / p->nz, x = p->cx + s * p->nx, y = p->cy + s * p->ny;
-        if (!(fabs(hypot(x, y) - 1.0) <= 1e-6)) return 0;
+        if (!(fabs(prox_hypot2(x, y) - 1.0) <= 1e-6)) return 0;
         ax[0] = atan2(y, x);
         return 1;
     }
     /* Axis (nearly) parallel to a's plane: work with its projection, direction (nx, ny)/|.|. */
-    double m = hypot(p->nx, p->ny), ex = p->nx / m, ey = p->ny / m;
+    double m = prox_hypot2(p->nx, p->ny), ex = p->nx / m, ey = p->ny / m;
     double along = p->cx * ex + p->cy * ey, fx = p->cx - along * ex, fy = p->cy - along * ey;
-    double delta = hypot(fx, fy);
+    double delta = prox_hypot2(fx, fy);
     if (delta >= 1.0 || delta == 0.0) { /* no crossing: nearest point, or the axis through a's centre */
         ax[0] = delta > 0.0 ? atan2(fy, fx) : atan2(ey, ex);
         ax[1] = ax[0] + PROX_PI;
@@ -205,7 +213,7 @@ int prox_circle_circle_stationary(const prox_fcircle *a, const prox_fcircle *b, 
 {
     *count = 0;
     cc_prob p = cc_make(a, b);
-    double cxy = hypot(p.cx, p.cy), nxy = hypot(p.nx, p.ny);
+    double cxy = prox_hypot2(p.cx, p.cy), nxy = prox_hypot2(p.nx, p.ny);
     if (nxy <= CC_COAXIAL_TOL && cxy <= CC_COAXIAL_TOL * p.scale) return 1; /* g is constant */
     double F[9], roots[8];
     int nr = 0;
@@ -251,12 +259,12 @@ static double cc_partner(const prox_fcircle *a, const prox_fcircle *b, double th
     prox_vec3 pa = prox_v3_add(prox_v3_scale(a->u, a->r * cos(th)), prox_v3_scale(a->v, a->r * sin(th)));
     prox_vec3 d = prox_v3_sub(pa, prox_v3_sub(b->c, a->c)); /* point of a relative to b's centre */
     double du = prox_v3_dot(d, b->u), dv = prox_v3_dot(d, b->v), dh = prox_v3_dot(d, b->n);
-    double rho = hypot(du, dv);
+    double rho = prox_hypot2(du, dv);
     *rho_out = rho;
     double cu = rho > 0.0 ? du / rho : 1.0, cv = rho > 0.0 ? dv / rho : 0.0;
     *thb = cc_wrap(atan2(cv, cu));
     *q = prox_v3_add(b->c, prox_v3_add(prox_v3_scale(b->u, b->r * cu), prox_v3_scale(b->v, b->r * cv)));
-    return hypot(rho - b->r, dh);
+    return prox_hypot2(rho - b->r, dh);
 }
 
 PROX_API prox_prim_result prox_circle_circle(const prox_circle *a, const prox_circle *b)

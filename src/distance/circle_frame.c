@@ -29,7 +29,7 @@ prox_vec3 prox_fcircle_closest(const prox_fcircle *b, prox_vec3 x, int *degenera
 {
     prox_vec3 d = prox_v3_sub(x, b->c);
     double du = prox_v3_dot(d, b->u), dv = prox_v3_dot(d, b->v);
-    double rho = hypot(du, dv);
+    double rho = prox_hypot2(du, dv);
     if (degenerate) *degenerate = 0;
     if (!(rho > 0.0)) {
         if (degenerate) *degenerate = 1;

@@ -19,7 +19,10 @@ PROX_API prox_vec3 prox_rcc_support_point(const prox_rcc *c, prox_vec3 d)
     prox_vec3 w = prox_v3_scale(c->axis, 1.0 / h);
     double dw = prox_v3_dot(d, w);
     prox_vec3 p = dw >= 0.0 ? prox_v3_add(c->base, c->axis) : c->base;
+    /* Rejected twice: for d nearly along the axis one pass leaves a rounding residual along w that
+     * normalisation would blow up, putting the point outside the cylinder. */
     prox_vec3 dp = prox_v3_mad(d, -dw, w);
+    dp = prox_v3_mad(dp, -prox_v3_dot(dp, w), w);
     double n = prox_v3_norm(dp);
     if (n > 0.0) p = prox_v3_mad(p, c->radius / n, dp);
     return p;

@@ -34,6 +34,10 @@ int prox_circle_line_stationary(const prox_fcircle *c, prox_vec3 p, prox_vec3 w,
  * then count = 0 and callers treat the contact as a set. Returns a negative prox_status on failure. */
 int prox_circle_circle_stationary(const prox_fcircle *a, const prox_fcircle *b, double th[8], int *count);
 
+/* A stationary angle on circle a of dist^2(point_a(theta), circle b) near th0 (safeguarded Newton on
+ * the trigonometric form, no polynomial): the fast path of RCC-RCC, whose answer is then certified. */
+double prox_circle_circle_local(const prox_fcircle *a, const prox_fcircle *b, double th0);
+
 /* Closest point of circle b to point x; *degenerate = 1 when x is on b's axis (every point of b is
  * closest: an arbitrary one is returned). */
 prox_vec3 prox_fcircle_closest(const prox_fcircle *b, prox_vec3 x, int *degenerate);
