@@ -28,7 +28,7 @@ static int sat_axis(const prox_bframe *A, const prox_bframe *B, int i, prox_vec3
         prox_vec3 c = prox_v3_cross(A->a[(i - 6) / 3], B->a[(i - 6) % 3]);
         double n = prox_v3_norm(c);
         if (!(n > 1e-300)) return 0; /* parallel edges: covered by the face normals */
-        *L = prox_v3_scale(c, 1.0 / n);
+        *L = prox_v3_divs(c, n);
     }
     return 1;
 }
@@ -130,7 +130,7 @@ PROX_API prox_distance_result prox_box_box_distance(const prox_box *a, const pro
         return r;
     }
     r.distance = feature_distance(&A, &B, &r.p1, &r.p2);
-    prox_vec3 n = r.distance > 0.0 ? prox_v3_scale(prox_v3_sub(r.p2, r.p1), 1.0 / r.distance) : L;
+    prox_vec3 n = r.distance > 0.0 ? prox_v3_divs(prox_v3_sub(r.p2, r.p1), r.distance) : L;
     r.certificate_gap = -prox_bframe_support(&B, prox_v3_neg(n)) - prox_bframe_support(&A, n);
     return r;
 }
@@ -206,7 +206,7 @@ PROX_API prox_signed_result prox_box_box_signed_distance(const prox_box *a, cons
     double o = sat_min_overlap(&A, &B, &i, &n);
     if (!d.intersect && d.distance > 0.0) {
         r.sd = d.distance;
-        r.normal = prox_v3_scale(prox_v3_sub(d.p2, d.p1), 1.0 / d.distance);
+        r.normal = prox_v3_divs(prox_v3_sub(d.p2, d.p1), d.distance);
         r.p1 = d.p1;
         r.p2 = d.p2;
         return r;

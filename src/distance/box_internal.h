@@ -7,6 +7,9 @@
 #include "prox/distance.h"
 #include "prox/query.h"
 
+/* a / s by components: unlike a * (1 / s) it stays finite for subnormal s (fuzz crash-6fd5bd04). */
+static inline prox_vec3 prox_v3_divs(prox_vec3 a, double s) { return prox_v3(a.x / s, a.y / s, a.z / s); }
+
 typedef struct prox_bframe {
     prox_vec3 m;    /* centre */
     prox_vec3 a[3]; /* unit edge directions */
@@ -20,7 +23,7 @@ static inline prox_bframe prox_bframe_make(const prox_box *b)
     f.m = b->corner;
     for (int k = 0; k < 3; ++k) {
         double len = prox_v3_norm(b->edge[k]);
-        f.a[k] = prox_v3_scale(b->edge[k], 1.0 / len);
+        f.a[k] = prox_v3_divs(b->edge[k], len);
         f.h[k] = 0.5 * len;
         f.m = prox_v3_mad(f.m, 0.5, b->edge[k]);
     }

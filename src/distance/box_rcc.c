@@ -26,7 +26,7 @@ static cyl_frame cyl_make(const prox_rcc *c)
     cyl_frame f;
     f.base = c->base;
     f.h = prox_v3_norm(c->axis);
-    f.w = prox_v3_scale(c->axis, 1.0 / f.h);
+    f.w = prox_v3_divs(c->axis, f.h);
     f.u = prox_v3_any_perp(f.w);
     f.v = prox_v3_cross(f.w, f.u);
     f.r = c->radius;
@@ -189,11 +189,11 @@ static double rim_face(const cyl_frame *c, int top, const prox_bframe *B, int k,
     prox_vec3 rj = prox_v3_reject(nf, c->w);
     double rn = prox_v3_norm(rj);
     prox_vec3 dir;
-    if (rn > 1e-12) dir = prox_v3_scale(rj, -1.0 / rn);
+    if (rn > 1e-12) dir = prox_v3_neg(prox_v3_divs(rj, rn));
     else { /* circle parallel to the face: every rim point is as low; take the one nearest the centre */
         prox_vec3 t = prox_v3_reject(prox_v3_sub(B->m, ctr), c->w);
         double tn = prox_v3_norm(t);
-        dir = tn > 0.0 ? prox_v3_scale(t, 1.0 / tn) : c->u;
+        dir = tn > 0.0 ? prox_v3_divs(t, tn) : c->u;
     }
     *x = prox_v3_mad(ctr, c->r, dir);
     double l[3];
@@ -247,7 +247,7 @@ PROX_API prox_signed_result prox_box_rcc_signed_distance(const prox_box *a, cons
     if (r.status != PROX_OK) return r;
     if (!d.intersect && d.distance > 0.0) {
         r.sd = d.distance;
-        r.normal = prox_v3_scale(prox_v3_sub(d.p2, d.p1), 1.0 / d.distance);
+        r.normal = prox_v3_divs(prox_v3_sub(d.p2, d.p1), d.distance);
         r.p1 = d.p1;
         r.p2 = d.p2;
         return r;

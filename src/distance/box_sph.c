@@ -36,7 +36,7 @@ PROX_API prox_distance_result prox_box_sph_distance(const prox_box *a, const pro
         r.p1 = r.p2 = q;
         return r;
     }
-    prox_vec3 n = prox_v3_scale(prox_v3_sub(b->center, q), 1.0 / d);
+    prox_vec3 n = prox_v3_divs(prox_v3_sub(b->center, q), d);
     r.distance = d - b->radius;
     r.p1 = q;
     r.p2 = prox_v3_mad(b->center, -b->radius, n);

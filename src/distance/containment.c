@@ -18,7 +18,7 @@ static cyl_geom cyl_geom_make(const prox_rcc *c)
     cyl_geom g;
     g.base = c->base;
     g.h = prox_v3_norm(c->axis);
-    g.w = prox_v3_scale(c->axis, 1.0 / g.h);
+    g.w = prox_v3_divs(c->axis, g.h);
     g.u = prox_v3_any_perp(g.w);
     g.v = prox_v3_cross(g.w, g.u);
     g.r = c->radius;

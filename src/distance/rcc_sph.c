@@ -9,12 +9,12 @@
 double prox_rcc_point_signed(const prox_rcc *c, prox_vec3 x, prox_vec3 *q, prox_vec3 *n)
 {
     double h = prox_v3_norm(c->axis);
-    prox_vec3 w = prox_v3_scale(c->axis, 1.0 / h);
+    prox_vec3 w = prox_v3_divs(c->axis, h);
     prox_vec3 d = prox_v3_sub(x, c->base);
     double t = prox_v3_dot(d, w);
     prox_vec3 rad = prox_v3_mad(d, -t, w);
     double rho = prox_v3_norm(rad);
-    prox_vec3 e = rho > 0.0 ? prox_v3_scale(rad, 1.0 / rho) : prox_v3_any_perp(w);
+    prox_vec3 e = rho > 0.0 ? prox_v3_divs(rad, rho) : prox_v3_any_perp(w);
     if (t >= 0.0 && t <= h && rho <= c->radius) { /* inside: nearest of the base, top and side */
         double db = t, dt = h - t, ds = c->radius - rho;
         if (ds <= db && ds <= dt) {

@@ -8,7 +8,7 @@ static prox_vec3 centre_dir(prox_vec3 a, prox_vec3 b, double *d)
 {
     prox_vec3 v = prox_v3_sub(b, a);
     *d = prox_v3_norm(v);
-    return *d > 0.0 ? prox_v3_scale(v, 1.0 / *d) : prox_v3(0, 0, 1);
+    return *d > 0.0 ? prox_v3_divs(v, *d) : prox_v3(0, 0, 1);
 }
 
 PROX_API prox_signed_result prox_sph_sph_signed_distance(const prox_sph *a, const prox_sph *b)
