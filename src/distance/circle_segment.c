@@ -100,15 +100,31 @@ static int cl_grid(const cl_coef *k, double *out)
     return n;
 }
 
-int prox_circle_line_stationary(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, double th[4], int *count)
+/* Coefficients of h in the normalised frame: origin at the foot of c on the line, lengths in r. */
+static cl_coef cl_make(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, prox_vec3 *e_out)
 {
-    *count = 0;
-    /* Normalised frame: origin at the foot of c on the line, lengths in units of r. */
     prox_vec3 foot = prox_v3_mad(p, prox_v3_dot(prox_v3_sub(c->c, p), w), w);
     prox_vec3 e = prox_v3_scale(prox_v3_sub(c->c, foot), 1.0 / c->r);
     double al = prox_v3_dot(e, w), be = prox_v3_dot(c->u, w), ga = prox_v3_dot(c->v, w);
     cl_coef k = {al * be - prox_v3_dot(e, c->u), prox_v3_dot(e, c->v) - al * ga, -be * ga,
                  0.5 * (be - ga) * (be + ga)};
+    *e_out = e;
+    return k;
+}
+
+/* Local refinement for the RCC-RCC fast path: Newton on h from th0 (no quartic). */
+double prox_circle_line_local(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, double th0)
+{
+    prox_vec3 e;
+    cl_coef k = cl_make(c, p, w, &e);
+    return cl_polish(&k, th0);
+}
+
+int prox_circle_line_stationary(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, double th[4], int *count)
+{
+    *count = 0;
+    prox_vec3 e;
+    cl_coef k = cl_make(c, p, w, &e);
     double kmax = fmax(fmax(fabs(k.A), fabs(k.B)), fmax(fabs(k.C), fabs(k.D)));
     if (kmax <= 64.0 * DBL_EPSILON * (1.0 + prox_v3_norm(e))) return 1; /* line along the axis */
     double poly[5] = {k.B + k.C, 2.0 * k.A + 4.0 * k.D, -6.0 * k.C, 2.0 * k.A - 4.0 * k.D, k.C - k.B};

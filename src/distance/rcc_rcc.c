@@ -157,16 +157,11 @@ static prox_feature rim_feature(int end) { return end ? PROX_FEAT_RIM_TOP : PROX
 static prox_feature cap_feature(int end) { return end ? PROX_FEAT_TOP : PROX_FEAT_BASE; }
 
 /* Rim `end` of cylinder `rc` against the lateral surface of `lc`; `rim_is_a` orders the output. */
-static void cand_rim_lat(query *q, const cyl *rc, int end, const cyl *lc, int rim_is_a)
+/* Offers the rim points at the given angles against the lateral surface of lc (those whose foot on
+ * lc's axis lies on the finite axis); a rim point within lc's radius there is a common point. */
+static void rim_lat_offer(query *q, const cyl *rc, int end, const cyl *lc, int rim_is_a, const double *th, int cnt)
 {
-    double th[4];
-    int cnt = 0;
     const prox_fcircle *C = &rc->rim[end];
-    int constant = prox_circle_line_stationary(C, lc->b, lc->w, th, &cnt);
-    if (constant) { /* the rim is coaxial with the other axis: every point is equivalent */
-        th[0] = 0.0;
-        cnt = 1;
-    }
     for (int i = 0; i < cnt; ++i) {
         prox_vec3 x = prox_fcircle_point(C, th[i]);
         prox_vec3 dx = prox_v3_sub(x, lc->b);
@@ -185,6 +180,29 @@ static void cand_rim_lat(query *q, const cyl *rc, int end, const cyl *lc, int ri
         else
             offer(q, y, x, u, PROX_PAIR_CS, PROX_FEAT_LATERAL, rim_feature(end));
     }
+}
+
+/* Complete path: every stationary point of the rim-to-axis distance (quartic, Sec. 3.3). */
+static void cand_rim_lat(query *q, const cyl *rc, int end, const cyl *lc, int rim_is_a)
+{
+    double th[4];
+    int cnt = 0;
+    if (prox_circle_line_stationary(&rc->rim[end], lc->b, lc->w, th, &cnt)) {
+        th[0] = 0.0; /* the rim is coaxial with the other axis: every point is equivalent */
+        cnt = 1;
+    }
+    rim_lat_offer(q, rc, end, lc, rim_is_a, th, cnt);
+}
+
+/* Fast path: Newton from the rim point nearest to the other axis (towards the axis' closest point
+ * to the rim centre); certified afterwards like every candidate. */
+static void cand_rim_lat_local(query *q, const cyl *rc, int end, const cyl *lc, int rim_is_a)
+{
+    const prox_fcircle *C = &rc->rim[end];
+    prox_vec3 d = prox_v3_sub(C->c, lc->b);
+    prox_vec3 g = prox_v3_neg(prox_v3_mad(d, -prox_v3_dot(d, lc->w), lc->w)); /* centre -> axis */
+    double th = prox_circle_line_local(C, lc->b, lc->w, atan2(prox_v3_dot(g, C->v), prox_v3_dot(g, C->u)));
+    rim_lat_offer(q, rc, end, lc, rim_is_a, &th, 1);
 }
 
 /* ---- C-D: a rim against the interior of the other cylinder's end disk (Sec. 3.4) ---- */
@@ -411,13 +429,15 @@ static prox_agarwal_case classify(query *q, int *ea, int *eb)
 /* Rim against lateral surface unless it cannot produce a better candidate: its lower bound is not
  * below the best so far, or the rim's axial range along the other axis misses [0, h] (every
  * stationary point would then have its foot off the finite axis). */
-static void rim_lat_pruned(query *q, const cyl *rc, int end, const cyl *lc, int rim_is_a)
+static void rim_lat_pruned(query *q, const cyl *rc, int end, const cyl *lc, int rim_is_a, int local)
 {
     const prox_fcircle *C = &rc->rim[end];
     double tc = prox_v3_dot(prox_v3_sub(C->c, lc->b), lc->w);
     double half = C->r * prox_v3_norm(prox_v3_cross(C->n, lc->w));
     if (tc + half < 0.0 || tc - half > lc->h) return;
-    if (!q->have_best || rim_lat_lower_bound(C, lc) < q->best.d) cand_rim_lat(q, rc, end, lc, rim_is_a);
+    if (q->have_best && rim_lat_lower_bound(C, lc) >= q->best.d) return;
+    if (local) cand_rim_lat_local(q, rc, end, lc, rim_is_a);
+    else cand_rim_lat(q, rc, end, lc, rim_is_a);
 }
 
 /* Case 2/3 picks of Agarwal's hierarchy (Figs. 4, 5: disk-axis, then disk-disk through disk-circle,
@@ -426,24 +446,25 @@ static void hierarchy_groups(query *q, int ea, int eb, prox_agarwal_case cs)
 {
     if (cs == PROX_CASE_1) return; /* Case 1 ends at S-S */
     q->tag = 1;
-    rim_lat_pruned(q, &q->B, eb, &q->A, 0);
-    rim_lat_pruned(q, &q->A, ea, &q->B, 1);
+    rim_lat_pruned(q, &q->B, eb, &q->A, 0, 1);
+    rim_lat_pruned(q, &q->A, ea, &q->B, 1, 1);
     cand_rim_disk(q, &q->A, ea, &q->B, eb, 1);
     cand_rim_disk(q, &q->B, eb, &q->A, ea, 0);
     q->tag = 0;
 }
 
-/* The other closed-form groups (no degree 8): remaining rims against lateral surfaces and disks. */
-static void closed_form_groups(query *q, int ea, int eb, prox_agarwal_case cs)
+/* The other closed-form groups: remaining rims against lateral surfaces (local Newton, or the
+ * complete quartic when `local` is 0) and every rim against the other disks. */
+static void closed_form_groups(query *q, int ea, int eb, prox_agarwal_case cs, int local)
 {
-    if (cs == PROX_CASE_1) {
-        rim_lat_pruned(q, &q->B, eb, &q->A, 0);
-        rim_lat_pruned(q, &q->A, ea, &q->B, 1);
+    if (cs == PROX_CASE_1 || !local) {
+        rim_lat_pruned(q, &q->B, eb, &q->A, 0, local);
+        rim_lat_pruned(q, &q->A, ea, &q->B, 1, local);
         cand_rim_disk(q, &q->A, ea, &q->B, eb, 1);
         cand_rim_disk(q, &q->B, eb, &q->A, ea, 0);
     }
-    rim_lat_pruned(q, &q->B, !eb, &q->A, 0);
-    rim_lat_pruned(q, &q->A, !ea, &q->B, 1);
+    rim_lat_pruned(q, &q->B, !eb, &q->A, 0, local);
+    rim_lat_pruned(q, &q->A, !ea, &q->B, 1, local);
     for (int k = 1; k < 4; ++k) {
         int a = k < 2 ? ea : !ea, b = (k % 2) == 0 ? eb : !eb;
         cand_rim_disk(q, &q->A, a, &q->B, b, 1);
@@ -469,6 +490,20 @@ static prox_status rim_rim_groups(query *q, int ea0, int eb0, prox_agarwal_case 
         q->tag = 0;
     }
     return PROX_OK;
+}
+
+/* 1 when one of the cheap directions of Eberly's first tests (the centre line, either axis, their
+ * cross product) separates the solids: then no overlap search is needed. */
+static int separated_cheaply(const query *q)
+{
+    prox_vec3 dirs[4] = {prox_v3_sub(q->B.c, q->A.c), q->A.w, q->B.w, prox_v3_cross(q->A.w, q->B.w)};
+    for (int i = 0; i < 4; ++i) {
+        double l = prox_v3_norm(dirs[i]);
+        if (!(l > 0.0)) continue;
+        prox_vec3 n = prox_v3_scale(dirs[i], 1.0 / l);
+        if (gap_along(q, n) > 0.0 || gap_along(q, prox_v3_neg(n)) > 0.0) return 1;
+    }
+    return 0;
 }
 
 static void fill_overlap(const query *q, prox_rcc_result *res, prox_vec3 origin)
@@ -544,16 +579,20 @@ PROX_API prox_rcc_result prox_rcc_distance(const prox_rcc *a, const prox_rcc *b)
         hierarchy_groups(&q, ea, eb, cs);
         ok = !q.overlap && certified(&q, &gap);
     }
+    if (!ok && !q.overlap) { /* fast path: local Newton on the remaining rim groups */
+        closed_form_groups(&q, ea, eb, cs, 1);
+        ok = !q.overlap && certified(&q, &gap);
+    }
     if (!ok && !q.overlap) {
-        closed_form_groups(&q, ea, eb, cs);
+        rim_rim_groups(&q, ea, eb, cs, 0);
         ok = !q.overlap && certified(&q, &gap);
     }
     prox_vec3 last = q.A.c;
-    if (!ok && !q.overlap && !(gap > 0.0)) /* no separating direction seen yet: quick overlap search */
+    if (!ok && !q.overlap && !(gap > 0.0) && !separated_cheaply(&q)) /* quick overlap search */
         find_common_point(&q, q.have_best ? prox_v3_scale(prox_v3_add(q.best.p1, q.best.p2), 0.5)
                                           : prox_v3_scale(prox_v3_add(q.A.c, q.B.c), 0.5), 8, &last);
-    if (!ok && !q.overlap) {
-        rim_rim_groups(&q, ea, eb, cs, 0);
+    if (!ok && !q.overlap) { /* complete path: every stationary point (quartics, degree 8) */
+        closed_form_groups(&q, ea, eb, cs, 0);
         ok = !q.overlap && certified(&q, &gap);
     }
     if (!ok && !q.overlap) {

@@ -26,6 +26,10 @@ static inline prox_vec3 prox_fcircle_point(const prox_fcircle *c, double th)
  * Returns 1 when f is constant (line along the circle's axis): then count = 0. */
 int prox_circle_line_stationary(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, double th[4], int *count);
 
+/* A stationary angle of the same function near th0 (Newton only): the RCC-RCC fast path, whose answer
+ * is then certified. */
+double prox_circle_line_local(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, double th0);
+
 /* Every stationary angle theta_a on circle a of g(theta_a) = dist^2(point_a(theta_a), circle b)
  * (Agarwal Sec. 3.5, degree 8 in tan(theta_a/2), rooted by prox_poly_real_roots; the angle pi is
  * included when stationary), polished by Newton on the trigonometric form; count <= 8.
