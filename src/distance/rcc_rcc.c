@@ -58,6 +58,8 @@ typedef struct query {
     prox_vec3 common; /* a point of A and B when overlap */
     int parallel;     /* axes parallel to working precision */
     int tag;          /* the groups being generated are the hierarchy's picks */
+    int ok;           /* the best candidate is certified */
+    double gap;       /* the best separation seen along the best candidate's normal */
 } query;
 
 static cyl cyl_make(const prox_rcc *c, prox_vec3 origin)
@@ -216,6 +218,8 @@ static void cand_rim_disk(query *q, const cyl *rc, int rend, const cyl *dc, int 
     double outward = dend ? 1.0 : -1.0; /* outward normal of the disk is outward * m */
     double mu = prox_v3_dot(m, C->u), mv = prox_v3_dot(m, C->v);
     double amp = prox_hypot2(mu, mv);
+    /* Lower bound: the rim's heights over the disk plane lie within r * amp of its centre's height. */
+    if (q->have_best && fabs(prox_v3_dot(prox_v3_sub(C->c, D), m)) - C->r * amp >= q->best.d) return;
     prox_vec3 dirs[2];
     int nd;
     if (amp > 64.0 * DBL_EPSILON) { /* the two extreme points */
@@ -304,6 +308,14 @@ static int certified(const query *q, double *gap_out)
     }
     *gap_out = g;
     return g >= q->best.d - q->eps;
+}
+
+/* Updates the certificate; 1 when the query is decided (certified minimum, or overlap found). */
+static int settle(query *q)
+{
+    if (q->overlap) return 1;
+    q->ok = certified(q, &q->gap);
+    return q->ok;
 }
 
 /* Lower bound on the distance between rim circles: centre distance minus radii, and the range of
@@ -483,12 +495,16 @@ static prox_status rim_rim_groups(query *q, int ea0, int eb0, prox_agarwal_case 
         if (full) {
             prox_status st = cand_rim_rim(q, ea, eb);
             if (st != PROX_OK) return st;
-        } else {
+            if (settle(q)) break;
+        } else { /* two starts: the centre line, then the best normal so far; stop once certified */
             cand_rim_rim_local(q, ea, eb, prox_v3_sub(q->B.rim[eb].c, q->A.rim[ea].c));
+            if (settle(q)) break;
             if (q->have_best) cand_rim_rim_local(q, ea, eb, q->best.n);
+            if (settle(q)) break;
         }
         q->tag = 0;
     }
+    q->tag = 0;
     return PROX_OK;
 }
 
@@ -573,32 +589,20 @@ PROX_API prox_rcc_result prox_rcc_distance(const prox_rcc *a, const prox_rcc *b)
     int ea, eb;
     prox_agarwal_case cs = classify(&q, &ea, &eb);
     res.agarwal = cs;
-    double gap = -INFINITY;
-    int ok = !q.overlap && certified(&q, &gap);
-    if (!ok && !q.overlap && cs != PROX_CASE_1) {
-        hierarchy_groups(&q, ea, eb, cs);
-        ok = !q.overlap && certified(&q, &gap);
-    }
-    if (!ok && !q.overlap) { /* fast path: local Newton on the remaining rim groups */
-        closed_form_groups(&q, ea, eb, cs, 1);
-        ok = !q.overlap && certified(&q, &gap);
-    }
-    if (!ok && !q.overlap) {
-        rim_rim_groups(&q, ea, eb, cs, 0);
-        ok = !q.overlap && certified(&q, &gap);
-    }
+    q.gap = -INFINITY;
+    q.ok = 0;
+    /* Each step adds candidates and stops the query as soon as the best one is certified. */
+    if (!settle(&q) && cs != PROX_CASE_1) hierarchy_groups(&q, ea, eb, cs);
+    if (!settle(&q)) closed_form_groups(&q, ea, eb, cs, 1); /* fast path: local Newton */
+    if (!settle(&q)) rim_rim_groups(&q, ea, eb, cs, 0);
     prox_vec3 last = q.A.c;
-    if (!ok && !q.overlap && !(gap > 0.0) && !separated_cheaply(&q)) /* quick overlap search */
+    if (!settle(&q) && !(q.gap > 0.0) && !separated_cheaply(&q)) /* quick overlap search */
         find_common_point(&q, q.have_best ? prox_v3_scale(prox_v3_add(q.best.p1, q.best.p2), 0.5)
                                           : prox_v3_scale(prox_v3_add(q.A.c, q.B.c), 0.5), 8, &last);
-    if (!ok && !q.overlap) { /* complete path: every stationary point (quartics, degree 8) */
-        closed_form_groups(&q, ea, eb, cs, 0);
-        ok = !q.overlap && certified(&q, &gap);
-    }
-    if (!ok && !q.overlap) {
-        if ((res.status = rim_rim_groups(&q, ea, eb, cs, 1)) != PROX_OK) return res;
-        ok = !q.overlap && certified(&q, &gap);
-    }
+    if (!settle(&q)) closed_form_groups(&q, ea, eb, cs, 0); /* complete: quartics, then degree 8 */
+    if (!settle(&q) && (res.status = rim_rim_groups(&q, ea, eb, cs, 1)) != PROX_OK) return res;
+    int ok = settle(&q) && !q.overlap;
+    double gap = q.gap;
     if (!ok && !q.overlap && q.have_best) /* not certified: look for a common point */
         find_common_point(&q, prox_v3_scale(prox_v3_add(q.best.p1, q.best.p2), 0.5), 200, &last);
     if (!q.overlap && !q.have_best) { /* no candidate at all: only possible when overlapping */
