@@ -7,6 +7,7 @@
  * the witnesses exactly `margin` apart, so dist(A, B') = margin. */
 #include "distance/box_internal.h"
 #include "prox/support.h"
+#include "prox/distance.h"
 
 /* Kind after RPP -> BOX, and the box itself. */
 typedef struct norm_shape {
@@ -52,27 +53,18 @@ static prox_signed_result mirror_s(prox_signed_result r)
     return r;
 }
 
-/* RCC-RCC distance through the certified support-function signed distance (prox_rcc_signed_distance). */
+/* RCC-RCC distance: the exact closed-form query of distance.h (Agarwal's primitives, certified). */
 static prox_distance_result rcc_rcc_distance(const prox_rcc *a, const prox_rcc *b)
 {
     prox_distance_result r = {0};
-    prox_signed_result s = prox_rcc_signed_distance(a, b);
-    r.status = s.status;
+    prox_rcc_result e = prox_rcc_distance(a, b);
+    r.status = e.status;
     if (r.status != PROX_OK) return r;
-    if (s.sd > 0.0) {
-        r.distance = s.sd;
-        r.p1 = s.p1;
-        r.p2 = s.p2;
-        r.certificate_gap = -prox_rcc_support(b, prox_v3_neg(s.normal)) - prox_rcc_support(a, s.normal);
-    } else {
-        /* a common point: a witness lying in the other solid, else the mid-witness */
-        double tol = PROX_QUERY_REL_TOL * prox_rcc_pair_scale(a, b);
-        r.intersect = 1;
-        if (prox_rcc_contains_point(a, s.p2, tol)) r.p1 = s.p2;
-        else if (prox_rcc_contains_point(b, s.p1, tol)) r.p1 = s.p1;
-        else r.p1 = prox_v3_scale(prox_v3_add(s.p1, s.p2), 0.5);
-        r.p2 = r.p1;
-    }
+    r.intersect = e.interfere;
+    r.distance = e.distance;
+    r.p1 = e.p1;
+    r.p2 = e.p2;
+    r.certificate_gap = e.interfere ? 0.0 : e.certificate_gap;
     return r;
 }
 
