@@ -221,6 +221,32 @@ static int find_portal(const sat_k *k, prox_vec3 p[3])
     return 0;
 }
 
+/* Rounding-safe lower bound of t* from the portal (p0, p1, p2) with computed normal N, nn = N.n > 0.
+ * In exact arithmetic the plane through the portal meets the line R n at t n = sum l_i p_i, a point of
+ * conv(p) inside K, and t = N.p0 / nn. The computed N of a sliver portal (two vertices 1e-6 apart, the
+ * lateral segment of a side-by-side contact) is off by eps |e1||e2| / |N| ~ 1e-9 in direction, and
+ * N.p0 / nn then overshoots t by up to that times |p|: a false certificate (-1.5e-11 on a pair 4.5e-12
+ * apart). For any N, N.(sum l_i p_i) >= min_i N.p_i, so min_i N.p_i / nn (less the rounding of the dot
+ * products) is a true bound, provided the origin is robustly inside the projected portal: each 2D
+ * orientation must exceed its rounding bound, else no bound is claimed (-inf). */
+static double portal_low(const sat_k *k, const prox_vec3 p[3], prox_vec3 N, double nn)
+{
+    double s[3], m[3];
+    for (int i = 0; i < 3; ++i) {
+        const prox_vec3 *x = &p[i], *y = &p[(i + 1) % 3];
+        s[i] = cross2(k, *x, *y);
+        m[i] = 16.0 * DBL_EPSILON * sqrt(prox_v3_norm2(*x) * prox_v3_norm2(*y));
+    }
+    int pos = s[0] > m[0] && s[1] > m[1] && s[2] > m[2], neg = s[0] < -m[0] && s[1] < -m[1] && s[2] < -m[2];
+    if (!pos && !neg) return -INFINITY;
+    double lo = INFINITY, pm = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        lo = fmin(lo, prox_v3_dot(N, p[i]));
+        pm = fmax(pm, fabs(N.x * p[i].x) + fabs(N.y * p[i].y) + fabs(N.z * p[i].z));
+    }
+    return (lo - 4.0 * DBL_EPSILON * pm) / nn;
+}
+
 /* Certified minimisation of G; returns 1 separated (dir, value = gap), 0 intersecting (value = the
  * certified lower bound of G, > 0, or 0 when undecided within the tolerance). */
 static int other_dirs(const sat_cyl *a, const sat_cyl *b, prox_vec3 delta, double scale, prox_vec3 *dir, double *value)
@@ -240,7 +266,7 @@ static int other_dirs(const sat_cyl *a, const sat_cyl *b, prox_vec3 delta, doubl
         double nn = prox_v3_dot(N, k.n);
         if (nn < 0.0) { N = prox_v3_neg(N); nn = -nn; }
         if (!(nn > 1e-300 * sqrt(prox_v3_norm2(N)))) N = k.n, nn = 1.0; /* degenerate portal: use the pole */
-        else t_low = fmax(t_low, prox_v3_dot(N, p[0]) / nn);
+        else t_low = fmax(t_low, portal_low(&k, p, N, nn));
         if (t_low > L) { *value = t_low - L; return 0; } /* certified: no separating direction */
         double tu = kh(&k, N) / nn;
         if (tu < t_up) t_up = tu;
