@@ -48,7 +48,7 @@ typedef struct prox_crosscheck_result {
     int intersect_distance;  ///< verdict of prox_rcc_distance (its `interfere`)
     int intersect_sat;       ///< verdict of prox_rcc_sat
     double distance;         ///< prox_rcc_distance's distance
-    double sd;               ///< prox_rcc_signed_distance's signed distance
+    double sd;               ///< the support-function signed distance (independent of prox_rcc_distance)
     double sat_value;        ///< prox_rcc_sat's deciding value (gap when separated)
     double distance_diff;    ///< |distance - max(sd, 0)| (by duality 0 for disjoint pairs)
     double margin;           ///< |sd| / scale: distance of the pair from touching, relative

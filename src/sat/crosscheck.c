@@ -1,6 +1,6 @@
 /* Cross-check of the two cylinder methods (issue 4, Sec. 3): the closed-form distance of Agarwal
  * et al. (prox_rcc_distance, rcc_rcc.c) against Eberly's separating axes (prox_rcc_sat) and the
- * support-function signed distance (prox_rcc_signed_distance). By duality the distance of a
+ * support-function signed distance (sup_rcc_signed_support). By duality the distance of a
  * disjoint pair equals max over unit D of the projection gap, so both must give the same number;
  * verdicts may differ only within the tolerance band around touching. */
 #include "prox/sat.h"
@@ -8,6 +8,7 @@
 #include <float.h>
 
 #include "prox/distance.h"
+#include "sup_engine.h"
 
 PROX_API prox_crosscheck_result prox_rcc_crosscheck(const prox_rcc *a, const prox_rcc *b)
 {
@@ -17,7 +18,7 @@ PROX_API prox_crosscheck_result prox_rcc_crosscheck(const prox_rcc *a, const pro
     if (r.status != PROX_OK) return r;
     prox_rcc_result d = prox_rcc_distance(a, b);
     prox_sat_result s = prox_rcc_sat(a, b);
-    prox_signed_result g = prox_rcc_signed_distance(a, b);
+    prox_signed_result g = sup_rcc_signed_support(a, b); /* not prox_rcc_signed_distance: it uses the distance */
     if (d.status != PROX_OK) { r.status = d.status; return r; }
     if (s.status != PROX_OK) { r.status = s.status; return r; }
     if (g.status != PROX_OK) { r.status = g.status; return r; }

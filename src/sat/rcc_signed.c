@@ -1,10 +1,17 @@
-/* Signed distance of two solid cylinders by support-function optimisation (issue 4, Sec. 2):
- * sd = -min over unit D of h_A(D) + h_B(-D), h from Eberly's Eq. (4). See sup_engine.c. */
+/* Signed distance of two solid cylinders (issue 4, Sec. 2).
+ *
+ * Disjoint pairs: the closed-form distance of Agarwal et al. (prox_rcc_distance, certified by
+ * duality) is the exact answer: sd = distance, p1, p2 its proximal points, normal (p2 - p1) / sd.
+ * Overlapping pairs: penetration depth = min over unit D of h_A(D) + h_B(-D) (h from Eberly's
+ * Eq. (4)), minimised by the support-function engine (sup_engine.c), sd = -depth.
+ * sup_rcc_signed_support is the support-function method alone for both signs (SAT direction as a
+ * start): the independent second method of the cross-check. */
 #include "prox/sat.h"
 
+#include "prox/distance.h"
 #include "sup_engine.h"
 
-PROX_API prox_signed_result prox_rcc_signed_distance(const prox_rcc *a, const prox_rcc *b)
+prox_signed_result sup_rcc_signed_support(const prox_rcc *a, const prox_rcc *b)
 {
     prox_signed_result r = {0};
     /* the SAT validates both and gives a separating direction: the start of the local search */
@@ -13,4 +20,35 @@ PROX_API prox_signed_result prox_rcc_signed_distance(const prox_rcc *a, const pr
     prox_shape sa = prox_shape_from_rcc(*a), sb = prox_shape_from_rcc(*b);
     sup_body ba = sup_body_make(&sa), bb = sup_body_make(&sb);
     return sup_signed_distance(&ba, &bb, s.intersect ? NULL : &s.direction);
+}
+
+PROX_API prox_signed_result prox_rcc_signed_distance(const prox_rcc *a, const prox_rcc *b)
+{
+    prox_signed_result r = {0};
+    prox_rcc_result d = prox_rcc_distance(a, b); /* validates both */
+    if (d.status != PROX_OK) { r.status = d.status; return r; }
+    if (!d.interfere && d.distance > 0.0) {
+        r.status = PROX_OK;
+        r.sd = d.distance;
+        r.p1 = d.p1;
+        r.p2 = d.p2;
+        /* (p2 - p1) / |p2 - p1| is the normal; its direction carries the points' rounding,
+         * eps |p| / distance, so near touching (or when the points coincide) the normal comes from the
+         * support-function search instead (a disjoint pair's local search is global). */
+        prox_vec3 e = prox_v3_sub(d.p2, d.p1);
+        double en = prox_v3_norm(e);
+        double M = fmax(fmax(prox_v3_maxabs(d.p1), prox_v3_maxabs(d.p2)), prox_rcc_pair_scale(a, b));
+        if (en > 1e-7 * M) {
+            r.normal = prox_v3_scale(e, 1.0 / en);
+            return r;
+        }
+        prox_shape sa = prox_shape_from_rcc(*a), sb = prox_shape_from_rcc(*b);
+        sup_body ba = sup_body_make(&sa), bb = sup_body_make(&sb);
+        prox_signed_result g = sup_signed_distance(&ba, &bb, en > 0.0 ? &e : NULL);
+        r.normal = g.normal;
+        return r;
+    }
+    prox_shape sa = prox_shape_from_rcc(*a), sb = prox_shape_from_rcc(*b);
+    sup_body ba = sup_body_make(&sa), bb = sup_body_make(&sb);
+    return sup_signed_distance(&ba, &bb, NULL);
 }

@@ -34,4 +34,8 @@ prox_vec3 sup_pc(const sup_body *b, prox_vec3 d);
  * NULL): a direction to try first, e.g. a separating direction from the SAT. */
 prox_signed_result sup_signed_distance(const sup_body *a, const sup_body *b, const prox_vec3 *hint);
 
+/* Signed distance of two cylinders by the support-function method alone (both signs), started from
+ * the SAT's separating direction: the independent method of prox_rcc_crosscheck. */
+prox_signed_result sup_rcc_signed_support(const prox_rcc *a, const prox_rcc *b);
+
 #endif
