@@ -59,7 +59,7 @@ void bench_note(bench_case *c, const char *fmt, ...)
 }
 
 /* Case-name prefixes of the groups: a filter starting with one sets up that group only. */
-static const char *const g_groups[] = {"poly/", "prim/", "rcc/", "peer/", "stress/", "scene"};
+static const char *const g_groups[] = {"poly/", "prim/", "rcc/", "peer/", "stress/", "query/", "scene"};
 
 int bench_selected(const bench_opts *o, const char *name)
 {
@@ -218,6 +218,7 @@ int main(int argc, char **argv)
     bench_group_rcc(&o);
     bench_group_peers(&o);
     bench_group_stress(&o);
+    bench_group_query(&o);
 
     FILE *csv = NULL;
     if (csv_path && !(csv = fopen(csv_path, "w"))) {

@@ -93,5 +93,6 @@ void bench_group_prim(const bench_opts *o);
 void bench_group_rcc(const bench_opts *o);
 void bench_group_peers(const bench_opts *o);
 void bench_group_stress(const bench_opts *o);
+void bench_group_query(const bench_opts *o);
 
 #endif
