@@ -59,6 +59,7 @@ typedef struct query {
     int parallel;     /* axes parallel to working precision */
     int tag;          /* the groups being generated are the hierarchy's picks */
     int ok;           /* the best candidate is certified */
+    double lower;     /* max of gap(n) over the normals of the best and near-best candidates */
     double gap;       /* the best separation seen along the best candidate's normal */
 } query;
 
@@ -114,7 +115,15 @@ static void offer(query *q, prox_vec3 p1, prox_vec3 p2, prox_vec3 n, prox_pair_k
     if (cyl_contains(&q->B, p1, 0.0)) note_common(q, p1);
     if (cyl_contains(&q->A, p2, 0.0)) note_common(q, p2);
     double d = prox_v3_dist(p1, p2);
-    if (q->have_best && !(d < q->best.d)) return;
+    int better = !q->have_best || d < q->best.d;
+    /* Every normal gives a lower bound on the distance (weak duality); the normals of the best and of
+     * near-ties are the ones that can certify it (a near-parallel S-S normal is poor while the rim
+     * against the side, tied with it, has an exact one). */
+    if (better || d <= q->best.d + 1e-9 * q->scale) {
+        double g = gap_along(q, n);
+        if (g > q->lower) q->lower = g;
+    }
+    if (!better) return;
     cand c = {d, p1, p2, n, kind, f1, f2, q->tag};
     q->best = c;
     q->have_best = 1;
@@ -301,7 +310,7 @@ static void cand_rim_rim_local(query *q, int ea, int eb, prox_vec3 nest)
 static int certified(const query *q, double *gap_out)
 {
     if (!q->have_best) return 0;
-    double g = gap_along(q, q->best.n);
+    double g = q->lower;
     if (q->best.d > 0.0) {
         double g2 = gap_along(q, prox_v3_scale(prox_v3_sub(q->best.p2, q->best.p1), 1.0 / q->best.d));
         if (g2 > g) g = g2;
@@ -580,6 +589,7 @@ PROX_API prox_rcc_result prox_rcc_distance(const prox_rcc *a, const prox_rcc *b)
     q.have_best = 0;
     q.overlap = 0;
     q.tag = 0;
+    q.lower = -INFINITY;
     q.parallel = prox_v3_norm2(prox_v3_cross(q.A.w, q.B.w)) <= 1e-30;
 
     /* Cheap overlap witnesses first: either centre inside the other solid. */
