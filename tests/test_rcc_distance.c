@@ -102,7 +102,7 @@ static void check_reference_set(const char *name, set_stats *st)
         st->kinds[r.pair]++;
     }
     printf("# %s: %zu pairs, %zu overlapping; max |d-ref|/S %.3g, max ||p1-p2|-d|/S %.3g, max "
-           "off-surface/S %.3g; hierarchy alone certified %zu; pairs SS %zu CS %zu CD %zu CC %zu overlap %zu\n",
+           "off-surface/S %.3g; hierarchy pick final %zu; pairs SS %zu CS %zu CD %zu CC %zu overlap %zu\n",
            name, st->n, st->overlaps, st->max_derr, st->max_perr, st->max_onerr, st->hier_exact,
            st->kinds[PROX_PAIR_SS], st->kinds[PROX_PAIR_CS], st->kinds[PROX_PAIR_CD], st->kinds[PROX_PAIR_CC],
            st->kinds[PROX_PAIR_OVERLAP]);
