@@ -4,7 +4,9 @@
  * pass timing every query on its own (clock overhead subtracted) gives the median and p99 ns/query;
  * the figure reported for each statistic is its median over the repeats.
  * Usage: prox_bench [--quick] [--long] [--repeats R] [--filter SUBSTRING] [--csv FILE]
- *                   [--validation DIR] [--pairs N] [--list]   (--pairs: Agarwal-protocol pairs) */
+ *                   [--validation DIR] [--pairs N] [--list] [--agarwal-cases]
+ * (--pairs: Agarwal-protocol pairs; --agarwal-cases: the case-definition study of
+ * bench_agarwal_cases.c, no timing) */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime, CLOCK_MONOTONIC */
 #include <stdarg.h>
 #include <stdio.h>
@@ -149,7 +151,7 @@ static void usage(void)
 {
     fprintf(stderr,
             "usage: prox_bench [--quick] [--long] [--repeats R] [--filter SUBSTRING] [--csv FILE]\n"
-            "                  [--validation DIR] [--pairs N] [--list]\n");
+            "                  [--validation DIR] [--pairs N] [--list] [--agarwal-cases]\n");
 }
 
 /* Prints a double or an empty CSV field when NaN. */
@@ -194,11 +196,12 @@ int main(int argc, char **argv)
 {
     bench_opts o = {0, 0, 7, NULL, PROX_BENCH_VALIDATION_DIR, 0};
     const char *csv_path = NULL;
-    int list = 0;
+    int list = 0, study = 0;
     for (int k = 1; k < argc; ++k) {
         if (!strcmp(argv[k], "--quick")) o.quick = 1;
         else if (!strcmp(argv[k], "--long")) o.long_stress = 1;
         else if (!strcmp(argv[k], "--list")) list = 1;
+        else if (!strcmp(argv[k], "--agarwal-cases")) study = 1;
         else if (!strcmp(argv[k], "--repeats") && k + 1 < argc) o.repeats = atoi(argv[++k]);
         else if (!strcmp(argv[k], "--filter") && k + 1 < argc) o.filter = argv[++k];
         else if (!strcmp(argv[k], "--csv") && k + 1 < argc) csv_path = argv[++k];
@@ -211,6 +214,10 @@ int main(int argc, char **argv)
     }
     if (o.repeats < 5) o.repeats = 5; /* the median of at least 5 repeats */
     gsl_set_error_handler_off();      /* the library must never rely on GSL's aborting handler */
+    if (study) {
+        bench_agarwal_case_study(&o); /* counts only, no timing */
+        return 0;
+    }
 
     /* Build every selected input before any timing. */
     bench_group_poly(&o);

@@ -94,5 +94,7 @@ void bench_group_rcc(const bench_opts *o);
 void bench_group_peers(const bench_opts *o);
 void bench_group_stress(const bench_opts *o);
 void bench_group_query(const bench_opts *o);
+/* --agarwal-cases: shares of Agarwal's cases under several definitions (bench_agarwal_cases.c). */
+void bench_agarwal_case_study(const bench_opts *o);
 
 #endif
