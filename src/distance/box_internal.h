@@ -83,7 +83,7 @@ static inline prox_vec3 prox_bframe_closest(const prox_bframe *f, prox_vec3 x, d
         e[k] = l[k] - c;
         l[k] = c;
     }
-    d2 = hypot(hypot(e[0], e[1]), e[2]);
+    d2 = prox_v3_norm(prox_v3(e[0], e[1], e[2]));
     if (dist) *dist = d2;
     return prox_bframe_point(f, l);
 }

@@ -11,9 +11,12 @@
  * axis segment meets the box.
  * Distance (disjoint): a closest pair lies on (box vertex or edge, solid cylinder) or (rim circle, box
  * face interior); face-lateral and face-disk contacts are parallel and extend to one of those. Edge
- * against solid cylinder: dist(x(s), C) is convex and C^1 in s, minimised by bisection on the sign of
- * (x - proj_C x).x'(s). Rim against face: the circle's lowest point along the face normal. */
+ * against solid cylinder in closed form with the primitive solvers of Agarwal et al. (2016): the
+ * lateral surface by P(L, S) (Sec. 3.1, prox_segment_cylsurf_inf, kept when its foot is between the end
+ * planes), each end disk with its rim by P(D, L) (Sec. 3.2-3.3, prox_disk_segment), edges pruned by a
+ * capsule lower bound. Rim against face: the circle's lowest point along the face normal. */
 #include "distance/box_internal.h"
+#include "prox/primitives.h"
 #include "prox/support.h"
 
 typedef struct cyl_frame {
@@ -87,7 +90,7 @@ static int rim_meets_box(const cyl_frame *c, int top, const prox_bframe *B, doub
         g[k] = prox_v3_dot(prox_v3_sub(ctr, B->m), B->a[k]);
         al[k] = c->r * prox_v3_dot(c->u, B->a[k]);
         be[k] = c->r * prox_v3_dot(c->v, B->a[k]);
-        double R = hypot(al[k], be[k]), phi = atan2(be[k], al[k]);
+        double R = prox_hypot2(al[k], be[k]), phi = atan2(be[k], al[k]);
         for (int sgn = -1; sgn <= 1 && R > 0.0; sgn += 2) {
             double rho = (sgn * (B->h[k] + tol) - g[k]) / R;
             if (fabs(rho) > 1.0) continue;
@@ -156,28 +159,82 @@ PROX_API prox_test_result prox_box_rcc_test(const prox_box *a, const prox_rcc *b
     return r;
 }
 
-/* Minimum over s in [0,1] of dist(p + s d, C) for a segment disjoint from C: bisection on the sign of
- * the derivative of the convex squared distance. Returns the distance; *x, *y the points. */
-static double edge_cyl(const prox_rcc *cyl, prox_vec3 p, prox_vec3 q, prox_vec3 *x, prox_vec3 *y)
+/* Edge (segment) against the lateral surface: the foot of the segment's closest approach to the axis
+ * line (prox_segment_cylsurf_inf). It is a candidate only when its axial parameter lies in [0, h]: if the
+ * closest cylinder point of a disjoint edge is interior to the lateral surface, the convex function
+ * max(rho - r, 0) along the edge has a local, hence global, minimum there, which the solver returns
+ * (for an edge parallel to the axis the representative may fall outside [0, h]; then the edge passes an
+ * end plane at the same radius and the cap candidate attains the same distance). Conversely a foot in
+ * [0, h] outside the surface is the edge's own minimum: dist(x, C) >= dist(x, infinite cylinder), with
+ * equality at the foot. */
+static double edge_lateral(const cyl_frame *c, const prox_segment *s, prox_vec3 *x, prox_vec3 *y)
 {
-    prox_vec3 d = prox_v3_sub(q, p);
-    double lo = 0.0, hi = 1.0, s;
-#define DERIV(t) prox_v3_dot(prox_v3_sub(prox_v3_mad(p, (t), d), prox_rcc_closest_point(cyl, prox_v3_mad(p, (t), d))), d)
-    if (DERIV(0.0) >= 0.0) s = 0.0;
-    else if (DERIV(1.0) <= 0.0) s = 1.0;
-    else {
-        for (int it = 0; it < 80; ++it) {
-            double mid = 0.5 * (lo + hi);
-            if (mid <= lo || mid >= hi) break;
-            if (DERIV(mid) < 0.0) lo = mid;
-            else hi = mid;
-        }
-        s = 0.5 * (lo + hi);
+    prox_cylsurf S = {c->base, c->w, c->h, c->r};
+    prox_prim_result q = prox_segment_cylsurf_inf(s, &S);
+    if (q.status != PROX_OK || !(q.s2[0] >= 0.0 && q.s2[0] <= c->h)) return INFINITY;
+    *x = q.p1;
+    *y = q.p2;
+    return q.distance;
+}
+
+/* Distance of x to the segment s (for lower bounds). */
+static double point_seg_dist(prox_vec3 x, const prox_segment *s)
+{
+    prox_vec3 d = prox_v3_sub(s->b, s->a);
+    double dd = prox_v3_norm2(d), t = dd > 0.0 ? prox_v3_dot(prox_v3_sub(x, s->a), d) / dd : 0.0;
+    t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+    return prox_v3_dist(x, prox_v3_mad(s->a, t, d));
+}
+
+/* Edge against the solid end disk `top` (its rim included) by prox_disk_segment (closed form: plane
+ * crossing, endpoints against the disk, the rim by the quartic of prox_circle_segment), skipped when a
+ * cheap lower bound (height of the edge above the disk's plane; distance from the disk's centre minus r)
+ * already reaches `best`. */
+static double edge_cap(const cyl_frame *c, int top, const prox_segment *s, double best, prox_vec3 *x, prox_vec3 *y)
+{
+    prox_vec3 ctr = prox_v3_mad(c->base, top ? c->h : 0.0, c->w);
+    double ha = prox_v3_dot(prox_v3_sub(s->a, ctr), c->w), hb = prox_v3_dot(prox_v3_sub(s->b, ctr), c->w);
+    double lb = (ha > 0.0) == (hb > 0.0) && ha != 0.0 && hb != 0.0 ? fmin(fabs(ha), fabs(hb)) : 0.0;
+    lb = fmax(lb, point_seg_dist(ctr, s) - c->r);
+    if (lb >= best) return INFINITY;
+    prox_disk D = {ctr, c->w, c->r};
+    prox_prim_result q = prox_disk_segment(&D, s);
+    if (q.status != PROX_OK) return INFINITY;
+    *x = q.p2;
+    *y = q.p1;
+    return q.distance;
+}
+
+/* The 12 edges against the solid cylinder, nearest first by the capsule lower bound
+ * dist(edge, axis segment) - r (the cylinder lies in that capsule), stopping when the bound reaches the
+ * best distance found; each edge against the lateral surface and both end disks. */
+static void edges_cyl(const prox_bframe *B, const cyl_frame *c, double *best, prox_vec3 *p1, prox_vec3 *p2)
+{
+    prox_segment e[12];
+    double lb[12];
+    int order[12];
+    prox_vec3 top = prox_v3_mad(c->base, c->h, c->w), u, v;
+    for (int j = 0; j < 12; ++j) {
+        prox_bframe_edge(B, j, &e[j].a, &e[j].b);
+        lb[j] = prox_seg_seg(e[j].a, e[j].b, c->base, top, &u, &v) - c->r;
+        int i = j;
+        for (; i > 0 && lb[order[i - 1]] > lb[j]; --i) order[i] = order[i - 1];
+        order[i] = j;
     }
-#undef DERIV
-    prox_vec3 n;
-    *x = prox_v3_mad(p, s, d);
-    return prox_rcc_point_signed(cyl, *x, y, &n);
+    for (int i = 0; i < 12; ++i) {
+        const prox_segment *s = &e[order[i]];
+        if (lb[order[i]] >= *best) break;
+        prox_vec3 x, y;
+        double d = edge_lateral(c, s, &x, &y);
+        if (d < INFINITY) { /* the foot is on the finite surface: it minimises dist(edge, C) itself */
+            if (d < *best) *best = d, *p1 = x, *p2 = y;
+            continue;
+        }
+        for (int t = 0; t < 2; ++t) {
+            d = edge_cap(c, t, s, *best, &x, &y);
+            if (d < *best) *best = d, *p1 = x, *p2 = y;
+        }
+    }
 }
 
 /* Rim circle against the interior of the box face with outward normal sgn a_k: the circle's lowest
@@ -222,17 +279,17 @@ PROX_API prox_distance_result prox_box_rcc_distance(const prox_box *a, const pro
         return r;
     }
     double best = INFINITY;
-    for (int j = 0; j < 12; ++j) {
-        prox_vec3 p, q;
-        prox_bframe_edge(&B, j, &p, &q);
-        double d = edge_cyl(b, p, q, &x, &y);
-        if (d < best) best = d, r.p1 = x, r.p2 = y;
+    for (int i = 0; i < 8; ++i) { /* vertices first: a cheap upper bound for the pruning below */
+        prox_vec3 n, v = prox_bframe_vertex(&B, i);
+        double d = prox_rcc_point_signed(b, v, &y, &n);
+        if (d < best) best = d, r.p1 = v, r.p2 = y;
     }
     for (int top = 0; top < 2; ++top)
         for (int f = 0; f < 6; ++f) {
             double d = rim_face(&c, top, &B, f / 2, (f & 1) ? 1 : -1, &x, &y);
             if (d < best) best = d, r.p1 = y, r.p2 = x;
         }
+    edges_cyl(&B, &c, &best, &r.p1, &r.p2);
     r.distance = best;
     prox_vec3 n = prox_v3_normalize(prox_v3_sub(r.p2, r.p1));
     r.certificate_gap = -prox_rcc_support(b, prox_v3_neg(n)) - prox_bframe_support(&B, n);

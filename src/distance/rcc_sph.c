@@ -29,7 +29,7 @@ double prox_rcc_point_signed(const prox_rcc *c, prox_vec3 x, prox_vec3 *q, prox_
     /* outside: clamp axially and radially; the distance from the two offsets */
     double tc = t < 0.0 ? 0.0 : (t > h ? h : t);
     double rc = rho > c->radius ? c->radius : rho;
-    double dist = hypot(t - tc, rho - rc);
+    double dist = prox_hypot2(t - tc, rho - rc);
     *q = prox_v3_mad(prox_v3_mad(c->base, tc, w), rc, e);
     *n = prox_v3_normalize(prox_v3_sub(x, *q));
     return dist;
