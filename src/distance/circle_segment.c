@@ -32,7 +32,7 @@ typedef struct cl_coef {
 } cl_coef;
 static double cl_h(const cl_coef *k, double th, double *dh)
 {
-    double s = sin(th), c = cos(th), s2 = sin(2.0 * th), c2 = cos(2.0 * th);
+    double s = sin(th), c = cos(th), s2 = 2.0 * s * c, c2 = (c - s) * (c + s); /* one sincos */
     if (dh) *dh = k->A * c - k->B * s - 2.0 * k->C * s2 + 2.0 * k->D * c2;
     return k->A * s + k->B * c + k->C * c2 + k->D * s2;
 }
