@@ -362,6 +362,12 @@ static int circle_in_cyl(const prox_fcircle *C, const cyl *k, double tol)
     double tc = prox_v3_dot(prox_v3_sub(C->c, k->b), k->w);
     double half = C->r * prox_v3_norm(prox_v3_cross(C->n, k->w));
     if (tc - half < -tol || tc + half > k->h + tol) return 0;
+    /* Radially: the circle lies within rho_c + r of the axis and reaches at least max(rho_c, r)
+     * (its projection is an ellipse of semi-major axis r centred rho_c from the axis). */
+    prox_vec3 dc = prox_v3_sub(C->c, k->b);
+    double rho_c = prox_v3_norm(prox_v3_mad(dc, -prox_v3_dot(dc, k->w), k->w));
+    if (rho_c + C->r <= k->r + tol) return 1;
+    if (fmax(rho_c, C->r) > k->r + tol) return 0;
     double th[4];
     int cnt = 0;
     if (prox_circle_line_stationary(C, k->b, k->w, th, &cnt)) {
