@@ -92,14 +92,15 @@ static void test_signed_paper_cases(void **state)
 static void test_signed_agarwal_public(void **state)
 {
     (void)state;
-    /* Known limitation (docs/algorithms/sat.md): witness points near a cone point of an axis
-     * direction are only as good as the minimising direction there, ~1e-4 x scale worst. */
-    assert_true(check_set("agarwal_public", 2000) <= 1e-3);
+    /* Witness consistency |p2 - p1 - sd n| / S: disjoint pairs are exact (closed-form points);
+     * overlapping pairs measured 1.7e-8 worst (was 2.3e-4 before the kink snapping and the exact
+     * segment-segment witnesses; docs/algorithms/sat.md). The 1e-9 goal is not met yet. */
+    assert_true(check_set("agarwal_public", 2000) <= 1e-7);
 }
 static void test_signed_stress_public(void **state)
 {
     (void)state;
-    assert_true(check_set("stress_public", 1000) <= 1e-2);
+    assert_true(check_set("stress_public", 1000) <= 1e-4); /* measured 7.8e-6 (was 3.1e-3) */
 }
 
 /* Independent primal brute force in long double for disjoint pairs: alternating projections

@@ -32,20 +32,18 @@ PROX_API prox_signed_result prox_rcc_signed_distance(const prox_rcc *a, const pr
         r.sd = d.distance;
         r.p1 = d.p1;
         r.p2 = d.p2;
-        /* (p2 - p1) / |p2 - p1| is the normal; its direction carries the points' rounding,
-         * eps |p| / distance, so near touching (or when the points coincide) the normal comes from the
-         * support-function search instead (a disjoint pair's local search is global). */
+        /* (p2 - p1) / |p2 - p1| is the normal: it makes p2 - p1 = sd n hold to the points' rounding.
+         * Its direction carries that rounding, eps |p| / distance, so very near touching it is only a
+         * valid supporting direction to that accuracy. When the points coincide (a distance below
+         * their resolution) the SAT's separating direction is used. */
         prox_vec3 e = prox_v3_sub(d.p2, d.p1);
         double en = prox_v3_norm(e);
-        double M = fmax(fmax(prox_v3_maxabs(d.p1), prox_v3_maxabs(d.p2)), prox_rcc_pair_scale(a, b));
-        if (en > 1e-7 * M) {
+        if (en > 0.0) {
             r.normal = prox_v3_scale(e, 1.0 / en);
             return r;
         }
-        prox_shape sa = prox_shape_from_rcc(*a), sb = prox_shape_from_rcc(*b);
-        sup_body ba = sup_body_make(&sa), bb = sup_body_make(&sb);
-        prox_signed_result g = sup_signed_distance(&ba, &bb, en > 0.0 ? &e : NULL);
-        r.normal = g.normal;
+        prox_sat_result s = prox_rcc_sat(a, b);
+        r.normal = s.intersect ? prox_v3(0, 0, 1) : s.direction;
         return r;
     }
     prox_shape sa = prox_shape_from_rcc(*a), sb = prox_shape_from_rcc(*b);

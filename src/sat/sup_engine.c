@@ -19,6 +19,8 @@
  * local minimum per face), hence the global sampling of all strata. */
 #include "sup_engine.h"
 
+#include "prox/primitives.h"
+
 #include <float.h>
 
 #define SUP_TOPK 4
@@ -223,9 +225,46 @@ static void search_points(sup_search *s)
     }
 }
 
+/* The point at angle th of the great circle cos(th) u + sin(th) v. */
+static prox_vec3 circle_at(prox_vec3 u, prox_vec3 v, double th)
+{
+    return prox_v3_add(prox_v3_scale(u, cos(th)), prox_v3_scale(v, sin(th)));
+}
+
+/* Kinks of phi along the circle cos(th) u + sin(th) v inside (lo, hi): its crossings with the other
+ * ridges D.w = 0. Newton cannot converge onto a kink (it bisected ~45 times there), so each kink in
+ * the bracket is settled first from three values 1e-7 rad apart: a local minimum at the kink is
+ * recorded and ends the refinement (1), otherwise the bracket shrinks to the side that descends. */
+static int ridge_kinks(sup_search *s, prox_vec3 u, prox_vec3 v, double *lo, double *hi, double *th)
+{
+    prox_vec3 r[6];
+    int n = sup_ridges(s->a, r);
+    n += sup_ridges(s->b, r + n);
+    const double dl = 1e-7;
+    for (int i = 0; i < n; ++i) {
+        double ru = prox_v3_dot(u, r[i]), rv = prox_v3_dot(v, r[i]);
+        if (fabs(ru) + fabs(rv) < 1e-12) continue; /* this ridge itself (or parallel to it) */
+        double tk = atan2(-ru, rv);
+        for (int k = 0; k < 3; ++k) {
+            double t = tk + (k - 1) * PROX_PI;
+            while (t - 2.0 * PROX_PI > *lo) t -= 2.0 * PROX_PI;
+            while (t < *lo) t += 2.0 * PROX_PI;
+            if (!(t > *lo + dl && t < *hi - dl)) continue;
+            prox_vec3 d = circle_at(u, v, t);
+            double f = phi_eval(s, d), fl = phi_eval(s, circle_at(u, v, t - dl)), fr = phi_eval(s, circle_at(u, v, t + dl));
+            record(s, d, f);
+            if (f <= fl && f <= fr) return 1;
+            if (fl < fr) *hi = t; else *lo = t;
+            if (!(*th > *lo && *th < *hi)) *th = 0.5 * (*lo + *hi);
+        }
+    }
+    return 0;
+}
+
 /* Safeguarded Newton on phi(theta) along the great circle cos(th) u + sin(th) v in [lo, hi]. */
 static void ridge_refine(sup_search *s, prox_vec3 u, prox_vec3 v, double lo, double hi, double th)
 {
+    if (ridge_kinks(s, u, v, &lo, &hi, &th)) return;
     for (int it = 0; it < 80; ++it) {
         double c = cos(th), sn = sin(th);
         prox_vec3 d = prox_v3_add(prox_v3_scale(u, c), prox_v3_scale(v, sn));
@@ -429,6 +468,20 @@ static prox_vec3 face_proj(const sup_face *f, prox_vec3 x)
 static void witnesses(const sup_body *a, const sup_body *b, prox_vec3 n, double sd, prox_vec3 *p1, prox_vec3 *p2)
 {
     sup_face fa = face_of(a, n), fb = face_of(b, prox_v3_neg(n));
+    if (fa.dim == 1 && fb.dim == 1) {
+        /* two segments (two lateral lines): alternating projections converge like cos^2 of their
+         * angle, far too slowly for nearly parallel axes; the closest points of A's segment and
+         * B's segment moved by -sd n are the exact pair */
+        prox_segment sa = {prox_v3_mad(fa.c, -fa.s0, fa.e0), prox_v3_mad(fa.c, fa.s0, fa.e0)};
+        prox_vec3 cb = prox_v3_mad(fb.c, -sd, n);
+        prox_segment sb = {prox_v3_mad(cb, -fb.s0, fb.e0), prox_v3_mad(cb, fb.s0, fb.e0)};
+        prox_prim_result q = prox_segment_segment(&sa, &sb);
+        if (q.status == PROX_OK) {
+            *p1 = q.p1;
+            *p2 = prox_v3_mad(q.p2, sd, n);
+            return;
+        }
+    }
     prox_vec3 x = fa.c, y = face_proj(&fb, prox_v3_mad(x, sd, n));
     if (fa.dim > 0 || fb.dim > 0)
         for (int it = 0; it < 64; ++it) {
@@ -436,15 +489,38 @@ static void witnesses(const sup_body *a, const sup_body *b, prox_vec3 n, double 
             prox_vec3 yn = face_proj(&fb, prox_v3_mad(xn, sd, n));
             double mv = prox_v3_dist(xn, x) + prox_v3_dist(yn, y);
             x = xn; y = yn;
-            if (mv == 0.0) break;
+            if (mv <= 1e-17 * (prox_v3_maxabs(x) + prox_v3_maxabs(y) + fabs(sd))) break; /* at rounding */
         }
     *p1 = x;
     *p2 = y;
 }
 
-/* The result from the best direction found. */
-static prox_signed_result finish(const sup_search *s)
+/* Snaps the best direction onto a kink it is within 1e-5 rad of (cone point +-W, ridge D.w = 0),
+ * when phi there is no worse than 1e-12 x scale: the nonsmooth search ends a few 1e-7 rad off a
+ * kink, where the support set of a cylinder jumps from a disk or a segment to one point and the
+ * witnesses would be off by radius x angle. On the kink the support set is the whole face. */
+static void snap_to_kinks(sup_search *s)
 {
+    prox_vec3 r[6];
+    int n = sup_ridges(s->a, r);
+    n += sup_ridges(s->b, r + n);
+    for (int pass = 0; pass < 2; ++pass)
+        for (int i = 0; i < n; ++i) {
+            prox_vec3 d = s->best_d, c;
+            double dw = prox_v3_dot(d, r[i]);
+            if (fabs(dw) < 1e-5 && dw != 0.0) c = prox_v3_mad(d, -dw, r[i]);
+            else if (fabs(dw) > 1.0 - 5e-11 && fabs(dw) != 1.0) c = dw > 0.0 ? r[i] : prox_v3_neg(r[i]);
+            else continue;
+            c = unit(c);
+            double f = phi_eval(s, c);
+            if (f <= s->best_phi + 1e-12 * s->scale) { s->best_phi = f; s->best_d = c; }
+        }
+}
+
+/* The result from the best direction found. */
+static prox_signed_result finish(sup_search *s)
+{
+    snap_to_kinks(s);
     prox_signed_result res = {0};
     res.status = PROX_OK;
     res.sd = -s->best_phi;
