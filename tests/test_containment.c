@@ -112,6 +112,76 @@ static void test_random_nine_pairs(void **st)
         }
 }
 
+/* Long-double brute force for a rim (centre c, frame u, v, radius r) against cylinder B: the extremes of
+ * the axial coordinate and the largest distance from B's axis, by 256 samples refined by golden
+ * sections at every sampled local maximum (at most two: degree-2 trigonometric polynomials). */
+typedef long double ld;
+static ld rim_eval(const prox_rcc *b, prox_vec3 c, prox_vec3 u, prox_vec3 v, double r, ld th, int what)
+{
+    ld h = sqrtl((ld)b->axis.x * b->axis.x + (ld)b->axis.y * b->axis.y + (ld)b->axis.z * b->axis.z);
+    ld w[3] = {b->axis.x / h, b->axis.y / h, b->axis.z / h};
+    ld x[3] = {c.x + r * (cosl(th) * u.x + sinl(th) * v.x) - (ld)b->base.x,
+               c.y + r * (cosl(th) * u.y + sinl(th) * v.y) - (ld)b->base.y,
+               c.z + r * (cosl(th) * u.z + sinl(th) * v.z) - (ld)b->base.z};
+    ld t = x[0] * w[0] + x[1] * w[1] + x[2] * w[2];
+    if (what == 0) return -t;        /* maximise -t: the lowest point */
+    if (what == 1) return t;         /* the highest point */
+    ld q[3] = {x[0] - t * w[0], x[1] - t * w[1], x[2] - t * w[2]};
+    return sqrtl(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+}
+static ld rim_max(const prox_rcc *b, prox_vec3 c, prox_vec3 u, prox_vec3 v, double r, int what)
+{
+    enum { N = 256 };
+    ld best = -INFINITY;
+    for (int i = 0; i < N; ++i) {
+        ld th = 2 * 3.14159265358979323846L * i / N, f = rim_eval(b, c, u, v, r, th, what);
+        ld fl = rim_eval(b, c, u, v, r, th - 2.4543692606170259e-2L, what), fr = rim_eval(b, c, u, v, r, th + 2.4543692606170259e-2L, what);
+        if (f > best) best = f;
+        if (f < fl || f < fr) continue;
+        ld lo = th - 2.4543692606170259e-2L, hi = th + 2.4543692606170259e-2L, g = 0.6180339887498949L;
+        for (int it = 0; it < 90; ++it) {
+            ld x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+            ld f1 = rim_eval(b, c, u, v, r, x1, what), f2 = rim_eval(b, c, u, v, r, x2, what);
+            if (f1 > f2) hi = x2; else lo = x1;
+            if (f1 > best) best = f1;
+            if (f2 > best) best = f2;
+        }
+    }
+    return best;
+}
+
+/* RCC in RCC: the exact rim test (stationary angles) against the long-double brute force to 1e-12 x
+ * scale, including rims nearly coaxial and axes nearly parallel. */
+static void test_rcc_in_rcc_exact(void **st)
+{
+    (void)st;
+    test_rng g = test_rng_seed(77);
+    double worst = 0.0;
+    for (int i = 0; i < 400; ++i) {
+        prox_shape a = rnd(&g, 1, test_range(&g, 0.3, 1.2)), b = rnd(&g, 1, 3.0);
+        if (i % 4 == 1) a.u.rcc.axis = prox_v3_scale(b.u.rcc.axis, 0.3); /* parallel axes */
+        if (i % 4 == 2) { /* nearly parallel, nearly coaxial */
+            a.u.rcc.axis = prox_v3_add(prox_v3_scale(b.u.rcc.axis, 0.3), prox_v3(1e-7, -2e-7, 0));
+            a.u.rcc.base = prox_v3_add(prox_v3_mad(b.u.rcc.base, 0.2, b.u.rcc.axis), prox_v3(3e-8, 0, 1e-8));
+        }
+        prox_contain_result r = prox_rcc_in_rcc(&a.u.rcc, &b.u.rcc);
+        assert_int_equal(r.status, PROX_OK);
+        const prox_rcc *A = &a.u.rcc, *B = &b.u.rcc;
+        prox_vec3 w = prox_v3_normalize(A->axis), u = prox_v3_any_perp(w), v = prox_v3_cross(w, u);
+        ld hB = prox_v3_norm(B->axis), c = INFINITY;
+        for (int e = 0; e < 2; ++e) {
+            prox_vec3 ctr = e ? prox_v3_add(A->base, A->axis) : A->base;
+            ld lo = -rim_max(B, ctr, u, v, A->radius, 0), hi = rim_max(B, ctr, u, v, A->radius, 1);
+            ld rho = rim_max(B, ctr, u, v, A->radius, 2);
+            c = fminl(c, fminl(fminl(lo, hB - hi), B->radius - rho));
+        }
+        double S = prox_shape_pair_scale(&a, &b);
+        assert_near(r.clearance, (double)c, 1e-12 * S);
+        worst = fmax(worst, fabs(r.clearance - (double)c) / S);
+    }
+    print_message("rcc in rcc: max |clearance - brute| / scale = %.3g\n", worst);
+}
+
 /* Set 1 of the report in local orientation, with the corrected conditions (errata 2-11). */
 static void test_report_set1(void **st)
 {
@@ -160,6 +230,7 @@ static void test_report_set1(void **st)
 int main(void)
 {
     test_init();
-    const struct CMUnitTest tests[] = {cmocka_unit_test(test_random_nine_pairs), cmocka_unit_test(test_report_set1)};
+    const struct CMUnitTest tests[] = {cmocka_unit_test(test_random_nine_pairs), cmocka_unit_test(test_report_set1),
+                                       cmocka_unit_test(test_rcc_in_rcc_exact)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -4,8 +4,11 @@
  * B is convex, so A lies in B iff A's extreme points do: box vertices, cylinder rim circles, the sphere.
  * The clearance returned is min over A of the distance to B's boundary (signed: < 0 when A sticks out):
  * inside B that distance is concave, so its minimum over A is attained at an extreme point of A.
- * Point clearances: box min_k (h_k - |l_k|); cylinder min(t, h - t, r - rho); sphere R - |x - c|. */
+ * Point clearances: box min_k (h_k - |l_k|); cylinder min(t, h - t, r - rho); sphere R - |x - c|.
+ * A rim in a cylinder: axial extent t_c +- r |w_A x w_B|, and the largest distance of the rim from the
+ * axis, attained at a stationary angle of the circle-to-line distance (quartic of Agarwal Sec. 3.3). */
 #include "distance/box_internal.h"
+#include "distance/stationary.h"
 #include "prox/support.h"
 
 typedef struct cyl_geom {
@@ -163,33 +166,24 @@ PROX_API prox_contain_result prox_rcc_in_sph(const prox_rcc *a, const prox_sph *
     return finish(st, c, &sa, &sb);
 }
 
-/* Squared distance from B's axis of the rim point of A at angle th: |P + r cos U + r sin V|^2. */
-static double rim_rho2(prox_vec3 P, prox_vec3 U, prox_vec3 V, double th)
+/* Max over the rim circle C of the distance to the line (base, unit w): the squared distance is smooth
+ * and 2pi-periodic in the angle, so its maximum is at a stationary angle, and prox_circle_line_stationary
+ * returns every one of them (Agarwal Sec. 3.3 quartic, polished; the same test as circle_in_cyl of
+ * rcc_rcc.c). A constant distance (the line is C's axis) is read at any angle. */
+static double rim_max_axis_dist(const prox_fcircle *C, prox_vec3 base, prox_vec3 w)
 {
-    return prox_v3_norm2(prox_v3_add(P, prox_v3_add(prox_v3_scale(U, cos(th)), prox_v3_scale(V, sin(th)))));
-}
-
-/* Max over the rim (centre ctr, frame u, v, radius r) of the distance to the line (base, unit w).
- * The squared distance is a trigonometric polynomial of degree 2 (at most two local maxima, each
- * wider than pi/4): 64 samples bracket every maximum and golden sections polish the two best. */
-static double rim_max_axis_dist(prox_vec3 ctr, prox_vec3 u, prox_vec3 v, double r, prox_vec3 base, prox_vec3 w)
-{
-    prox_vec3 P = prox_v3_reject(prox_v3_sub(ctr, base), w);
-    prox_vec3 U = prox_v3_scale(prox_v3_reject(u, w), r), V = prox_v3_scale(prox_v3_reject(v, w), r);
-    enum { N = 64 };
-    double f[N], best = 0.0;
-    for (int i = 0; i < N; ++i) f[i] = rim_rho2(P, U, V, 2 * PROX_PI * i / N);
-    for (int i = 0; i < N; ++i) {
-        if (f[i] < f[(i + N - 1) % N] || f[i] < f[(i + 1) % N]) continue; /* not a sampled local max */
-        double lo = 2 * PROX_PI * (i - 1) / N, hi = 2 * PROX_PI * (i + 1) / N, g = 0.6180339887498949;
-        double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), f1 = rim_rho2(P, U, V, x1), f2 = rim_rho2(P, U, V, x2);
-        for (int it = 0; it < 70; ++it) {
-            if (f1 >= f2) { hi = x2; x2 = x1; f2 = f1; x1 = hi - g * (hi - lo); f1 = rim_rho2(P, U, V, x1); }
-            else { lo = x1; x1 = x2; f1 = f2; x2 = lo + g * (hi - lo); f2 = rim_rho2(P, U, V, x2); }
-        }
-        best = fmax(best, fmax(fmax(f1, f2), f[i]));
+    double th[4] = {0.0};
+    int cnt = 0;
+    if (prox_circle_line_stationary(C, base, w, th, &cnt) != 0 || cnt == 0) {
+        th[0] = 0.0;
+        cnt = 1;
     }
-    return sqrt(best);
+    double best = 0.0;
+    for (int i = 0; i < cnt; ++i) {
+        prox_vec3 d = prox_v3_sub(prox_fcircle_point(C, th[i]), base);
+        best = fmax(best, prox_v3_norm(prox_v3_reject(d, w)));
+    }
+    return best;
 }
 
 PROX_API prox_contain_result prox_rcc_in_rcc(const prox_rcc *a, const prox_rcc *b)
@@ -203,7 +197,8 @@ PROX_API prox_contain_result prox_rcc_in_rcc(const prox_rcc *a, const prox_rcc *
             prox_vec3 ctr = rim_center(&A, top);
             double tc = prox_v3_dot(prox_v3_sub(ctr, B.base), B.w);
             c = fmin(c, fmin(tc - s, B.h - tc - s));
-            c = fmin(c, B.r - rim_max_axis_dist(ctr, A.u, A.v, A.r, B.base, B.w));
+            prox_fcircle C = prox_fcircle_make(ctr, A.w, A.r);
+            c = fmin(c, B.r - rim_max_axis_dist(&C, B.base, B.w));
         }
     }
     prox_shape sa = prox_shape_from_rcc(*a), sb = prox_shape_from_rcc(*b);
