@@ -362,6 +362,21 @@ static void test_rcc_regress_needle_through_disk(void **state)
     assert_true(cyl_sdf(&a, r.p1) <= 0.0 && cyl_sdf(&b, r.p1) <= 0.0);
 }
 
+/* Regression: nearly coaxial stacked faces 3.1e-8 apart (bench stress generator, seed 4242).  The feet
+ * of the common perpendicular of nearly parallel axes are ill-conditioned; the point between them was
+ * taken as a common point without checking it, a false overlap.  Witnesses are now verified. */
+static void test_rcc_regress_unverified_witness(void **state)
+{
+    (void)state;
+    prox_rcc a = {prox_v3(0.99413632475023672, 0.68412746307358563, 0.6462808431220084),
+                  prox_v3(0.26921340113155301, -0.47369418226177085, 1.3970525502727136), 0.36213672898980798};
+    prox_rcc b = {prox_v3(0.70499273203065638, 1.19288979486628, -0.85419718622583263),
+                  prox_v3(0.2891435871336181, -0.50876232196392035, 1.5004780003601179), 0.46670162674792554};
+    prox_rcc_result r = prox_rcc_distance(&a, &b);
+    assert_false(r.interfere);
+    assert_near(r.distance, 3.11142e-08, 1e-13);
+}
+
 static void test_rcc_bad_input(void **state)
 {
     (void)state;
@@ -391,6 +406,7 @@ int main(void)
         cmocka_unit_test(test_rcc_sweeps),
         cmocka_unit_test(test_rcc_regress_coaxial_noise),
         cmocka_unit_test(test_rcc_regress_needle_through_disk),
+        cmocka_unit_test(test_rcc_regress_unverified_witness),
         cmocka_unit_test(test_rcc_bad_input),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -102,12 +102,15 @@ static int cyl_contains(const cyl *k, prox_vec3 x, double tol)
     return prox_v3_norm(prox_v3_mad(d, -t, k->w)) <= k->r + tol;
 }
 
+/* Records x as a common point of the solids after checking it against both (within the ulp-level
+ * slack eps: a point that close to both is at worst a touching contact).  Every overlap claim goes
+ * through this check, so a witness built on an ill-conditioned construction (feet of the common
+ * perpendicular of nearly parallel axes) cannot produce a false overlap. */
 static void note_common(query *q, prox_vec3 x)
 {
-    if (!q->overlap) {
-        q->overlap = 1;
-        q->common = x;
-    }
+    if (q->overlap || !cyl_contains(&q->A, x, q->eps) || !cyl_contains(&q->B, x, q->eps)) return;
+    q->overlap = 1;
+    q->common = x;
 }
 
 /* Offers a candidate pair; keeps the shortest. Points inside the other solid witness overlap. */
@@ -634,7 +637,10 @@ PROX_API prox_rcc_result prox_rcc_distance(const prox_rcc *a, const prox_rcc *b)
             note_common(&q, last); /* within the verdict's touching band */
     }
     if (!q.overlap && !q.have_best) { /* no candidate at all: only possible when overlapping */
-        if (!find_common_point(&q, q.A.c, 1000, &last)) note_common(&q, last); /* touching limit */
+        if (!find_common_point(&q, q.A.c, 1000, &last)) { /* touching limit: nothing else to report */
+            q.overlap = 1;
+            q.common = last;
+        }
     }
 
     if (q.overlap) {
