@@ -1,8 +1,10 @@
 #include <stdio.h>
+#include <gsl/gsl_errno.h>
 #include <prox/prox.h>
 
 int main(void)
 {
+    gsl_set_error_handler_off(); /* prox reports GSL failures as PROX_ENUMERIC */
     prox_rcc a = {prox_v3(0, 0, 0), prox_v3(0, 0, 12), 2.0};   /* RCC: base, axis (height), radius */
     prox_rcc b = {prox_v3(8, -8, 8), prox_v3(1.4782147081789352, 17.644185480676729, -3.24), 2.5};
     prox_rcc_result r = prox_rcc_distance(&a, &b);
