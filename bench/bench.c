@@ -61,7 +61,7 @@ void bench_note(bench_case *c, const char *fmt, ...)
 }
 
 /* Case-name prefixes of the groups: a filter starting with one sets up that group only. */
-static const char *const g_groups[] = {"poly/", "prim/", "rcc/", "peer/", "stress/", "query/", "scene"};
+static const char *const g_groups[] = {"poly/", "prim/", "rcc/", "peer/", "stress/", "query/", "xcheck/", "scene"};
 
 int bench_selected(const bench_opts *o, const char *name)
 {
@@ -192,6 +192,8 @@ static void print_row(FILE *csv, const bench_case *c, const case_stats *st, int 
     fflush(csv);
 }
 
+void bench_group_crosscheck(const bench_opts *o); /* bench/bench_crosscheck.c */
+
 int main(int argc, char **argv)
 {
     bench_opts o = {0, 0, 7, NULL, PROX_BENCH_VALIDATION_DIR, 0};
@@ -225,6 +227,7 @@ int main(int argc, char **argv)
     bench_group_rcc(&o);
     bench_group_peers(&o);
     bench_group_stress(&o);
+    bench_group_crosscheck(&o);
     bench_group_query(&o);
 
     FILE *csv = NULL;

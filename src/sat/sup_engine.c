@@ -496,7 +496,7 @@ static void witnesses(const sup_body *a, const sup_body *b, prox_vec3 n, double 
 }
 
 /* Snaps the best direction onto a kink it is within 1e-5 rad of (cone point +-W, ridge D.w = 0),
- * when phi there is no worse than 1e-12 x scale: the nonsmooth search ends a few 1e-7 rad off a
+ * when phi there is no worse (up to rounding, 4 eps x scale): the nonsmooth search ends a few 1e-7 rad off a
  * kink, where the support set of a cylinder jumps from a disk or a segment to one point and the
  * witnesses would be off by radius x angle. On the kink the support set is the whole face. */
 static void snap_to_kinks(sup_search *s)
@@ -513,7 +513,7 @@ static void snap_to_kinks(sup_search *s)
             else continue;
             c = unit(c);
             double f = phi_eval(s, c);
-            if (f <= s->best_phi + 1e-12 * s->scale) { s->best_phi = f; s->best_d = c; }
+            if (f <= s->best_phi + 4.0 * DBL_EPSILON * s->scale) { s->best_phi = f; s->best_d = c; }
         }
 }
 
