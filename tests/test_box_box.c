@@ -1,6 +1,7 @@
 /* BOX-BOX hand-made cases (box_box.c): face-to-face, edge-to-edge, vertex-to-face distances, a box
  * wholly inside another and a cross of two bars (both missed by the TRX report's Sec. 3.1 edge-of-B
- * against faces-of-A test), exact depths and witnesses. Random pairs are in test_query.c. */
+ * against faces-of-A test), exact depths and witnesses, near-parallel edges (within 1e-9) and the
+ * edge/face axis ties they produce. Random pairs are in test_query.c. */
 #include "test_util.h"
 #include "prox/query.h"
 
@@ -107,10 +108,155 @@ static void test_inside_and_cross(void **st)
     assert_near(prox_box_box_signed_distance(&x, &y).sd, -0.75, 1e-15); /* exit along z: 1 - 0.25 */
 }
 
+/* Long-double overlap of the projections of two boxes on the (non-unit) direction L. */
+typedef long double ld;
+static ld ov_ld(const prox_box *a, const prox_box *b, const ld L[3])
+{
+    ld n = sqrtl(L[0] * L[0] + L[1] * L[1] + L[2] * L[2]), ra = 0, rb = 0, c = 0;
+    ld ma[3] = {a->corner.x, a->corner.y, a->corner.z}, mb[3] = {b->corner.x, b->corner.y, b->corner.z};
+    for (int k = 0; k < 3; ++k) {
+        ld ea[3] = {a->edge[k].x, a->edge[k].y, a->edge[k].z}, eb[3] = {b->edge[k].x, b->edge[k].y, b->edge[k].z};
+        for (int j = 0; j < 3; ++j) ma[j] += ea[j] / 2, mb[j] += eb[j] / 2;
+        ra += fabsl(ea[0] * L[0] + ea[1] * L[1] + ea[2] * L[2]) / 2;
+        rb += fabsl(eb[0] * L[0] + eb[1] * L[1] + eb[2] * L[2]) / 2;
+    }
+    for (int j = 0; j < 3; ++j) c += (mb[j] - ma[j]) * L[j];
+    return (ra + rb - fabsl(c)) / n;
+}
+
+/* Brute-force depth in long double: the least overlap over every face normal and every cross product
+ * of edges, however short (in long double the near-parallel cross products keep ~10 digits), and over
+ * 2000 further directions (a lower overlap anywhere would disprove the SAT minimum). */
+static ld brute_depth(const prox_box *a, const prox_box *b)
+{
+    ld best = INFINITY;
+    for (int p = 0; p < 3; ++p) {
+        ld x[3] = {a->edge[p].x, a->edge[p].y, a->edge[p].z}, z[3] = {b->edge[p].x, b->edge[p].y, b->edge[p].z};
+        best = fminl(best, fminl(ov_ld(a, b, x), ov_ld(a, b, z)));
+        for (int q = 0; q < 3; ++q) {
+            ld y[3] = {b->edge[q].x, b->edge[q].y, b->edge[q].z};
+            ld c[3] = {x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+            if (c[0] != 0 || c[1] != 0 || c[2] != 0) best = fminl(best, ov_ld(a, b, c));
+        }
+    }
+    for (int i = 0; i < 2000; ++i) {
+        ld zz = 1 - (2.0L * i + 1) / 2000, rr = sqrtl(1 - zz * zz), th = 2.399963229728653L * i;
+        ld d[3] = {rr * cosl(th), rr * sinl(th), zz};
+        assert_true(ov_ld(a, b, d) >= best - 1e-15L);
+    }
+    return best;
+}
+
+/* Distance of x from a box (0 inside), through the box-sphere solver with a tiny sphere. */
+static double off_box(const prox_box *b, prox_vec3 x)
+{
+    prox_sph s = {x, 1e-300};
+    prox_distance_result d = prox_box_sph_distance(b, &s);
+    return d.intersect ? 0.0 : d.distance;
+}
+
+/* Regression: edges parallel within 1e-9 (nearly aligned bars, one rolled about its axis). The cross
+ * product of two nearly parallel edges is a noisy axis, and an edge axis can tie a face axis (an edge
+ * lying across a face) while its support edges do not cross: the witnesses were then 1e-4 off
+ * (p2 - p1 != sd n). Depth against the long-double SAT brute force, witnesses in their boxes. */
+static void test_near_parallel_edges(void **st)
+{
+    (void)st;
+    test_rng g = test_rng_seed(99);
+    int n = 0;
+    for (int i = 0; i < 3000; ++i) {
+        double eps = (i % 2 ? 1e-9 : pow(10.0, test_range(&g, -13, -9))) * test_range(&g, 0.1, 1.0);
+        test_rot R = test_random_rot(&g);
+        double th = test_range(&g, 0, PROX_PI / 2), c = cos(th), s = sin(th);
+        prox_vec3 ea[3] = {{2, 0, 0}, {0, 0.2, 0}, {0, 0, 0.1}};
+        prox_vec3 eb[3] = {{2.5, 0, 0}, {0, 0.3 * c, 0.3 * s}, {0, -0.15 * s, 0.15 * c}};
+        prox_vec3 w = test_unit(&g); /* tilt b by eps about a random axis (first order: stays orthogonal) */
+        prox_box a, b;
+        for (int k = 0; k < 3; ++k) {
+            eb[k] = prox_v3_add(eb[k], prox_v3_scale(prox_v3_cross(w, eb[k]), eps));
+            a.edge[k] = test_rot_apply(&R, ea[k]);
+            b.edge[k] = test_rot_apply(&R, eb[k]);
+        }
+        a.corner = prox_v3(0, 0, 0);
+        b.corner = test_rot_apply(&R, prox_v3(test_range(&g, -1, 1), test_range(&g, -0.25, 0.25), test_range(&g, -0.25, 0.25)));
+        prox_signed_result r = prox_box_box_signed_distance(&a, &b);
+        assert_int_equal(r.status, PROX_OK);
+        if (r.sd > 0) continue;
+        ++n;
+        double S = 2.5 + prox_v3_norm(b.corner); /* >= the pair scale */
+        assert_near(-r.sd, (double)brute_depth(&a, &b), 1e-9 * S);
+        assert_near(prox_v3_dist(r.p2, prox_v3_mad(r.p1, r.sd, r.normal)), 0.0, 1e-9 * S);
+        assert_true(off_box(&a, r.p1) <= 2e-9 * S && off_box(&b, r.p2) <= 2e-9 * S);
+        assert_near(prox_v3_norm(r.normal), 1.0, 1e-15);
+    }
+    print_message("near-parallel edges: %d overlapping pairs checked\n", n);
+    assert_true(n > 1000);
+}
+
+/* The tie itself, deterministic: a bar rolled by 45 degrees presses its lower edge (parallel to A's x
+ * edges within eps) into the middle of A's top face, away from A's ends. Face axis z and the edge axis
+ * a_y x b_x tie; the support edges of that edge axis (A's end edge along y, B's lower edge) do not
+ * cross. */
+static void test_edge_across_face_tie(void **st)
+{
+    (void)st;
+    test_rng g = test_rng_seed(7);
+    prox_box a = aabb(-1, 1, -0.1, 0.1, -0.05, 0.05);
+    for (int i = 0; i < 2000; ++i) {
+        double eps = (i % 4 ? 1e-9 * test_range(&g, -1, 1) : 0.0), s = sqrt(0.5), depth = 0.01;
+        double L = test_range(&g, 0.2, 1.0), e = test_range(&g, 0.05, 0.2);
+        double ez = eps, ey = 1e-9 * test_range(&g, -1, 1); /* yaw and pitch of the bar */
+        prox_box b;
+        prox_vec3 loc[3] = {{2 * L, 0, 0}, {0, e * s, e * s}, {0, -e * s, e * s}};
+        for (int k = 0; k < 3; ++k) {
+            prox_vec3 v = loc[k];
+            v = prox_v3(cos(ey) * v.x + sin(ey) * v.z, v.y, -sin(ey) * v.x + cos(ey) * v.z);
+            b.edge[k] = prox_v3(cos(ez) * v.x - sin(ez) * v.y, sin(ez) * v.x + cos(ez) * v.y, v.z);
+        }
+        assert_int_equal(prox_box_validate(&b), PROX_OK);
+        b.corner = prox_v3(-L + test_range(&g, -0.2, 0.2), test_range(&g, -0.05, 0.05), 0.05 - depth);
+        test_rot R = test_random_rot(&g); /* the whole scene in a random orientation: random rounding */
+        prox_box ra = a;
+        ra.corner = test_rot_apply(&R, a.corner);
+        b.corner = test_rot_apply(&R, b.corner);
+        for (int k = 0; k < 3; ++k) ra.edge[k] = test_rot_apply(&R, a.edge[k]), b.edge[k] = test_rot_apply(&R, b.edge[k]);
+        prox_signed_result r = prox_box_box_signed_distance(&ra, &b);
+        assert_int_equal(r.status, PROX_OK);
+        assert_near(-r.sd, (double)brute_depth(&ra, &b), 1e-9 * 2.5);
+        assert_near(-r.sd, depth, 4e-9);
+        assert_near(prox_v3_dist(r.p2, prox_v3_mad(r.p1, r.sd, r.normal)), 0.0, 1e-9 * 2.5);
+        assert_true(off_box(&ra, r.p1) <= 2e-9 && off_box(&b, r.p2) <= 2e-9);
+    }
+}
+
+/* Regression (found by a seeded search of rolled, nearly aligned bars; x edges parallel within 3e-12):
+ * the least SAT overlap came first from an edge axis tied with a face axis whose support edges do not
+ * cross, and the witnesses were 1.3e-4 off (p2 - p1 != sd n). */
+static void test_tie_regression(void **st)
+{
+    (void)st;
+    prox_box a = {{0, 0, 0},
+                  {{-0x1.7864d8cf34568p+0, -0x1.10da2dde016a4p-1, -0x1.3f278564a7062p+0},
+                   {0x1.28cbffa68587p-4, 0x1.fe28ce283ab9fp-4, -0x1.1c0ccdedac244p-3},
+                   {0x1.d561a5c3e4aeap-5, -0x1.2d525b55e5e6ep-4, -0x1.27f506c403907p-5}}};
+    prox_box b = {{0x1.323feb5757db3p-2, 0x1.232d6567797f8p-3, 0x1.8dc07954eedebp-2},
+                  {{-0x1.d67e0f0300356p+0, -0x1.5510b95576b2ep-1, -0x1.8ef166bdd493dp+0},
+                   {0x1.74c9e48c855acp-3, 0x1.7447286b1e03ep-5, -0x1.df6e54332bc2ep-3},
+                   {0x1.738672b414c2ep-5, -0x1.246a026664e2dp-3, 0x1.ee9a914daa8a8p-8}}};
+    prox_signed_result r = prox_box_box_signed_distance(&a, &b);
+    assert_int_equal(r.status, PROX_OK);
+    assert_near(-r.sd, (double)brute_depth(&a, &b), 1e-12 * 3);
+    assert_near(prox_v3_dist(r.p2, prox_v3_mad(r.p1, r.sd, r.normal)), 0.0, 1e-12 * 3);
+    assert_true(off_box(&a, r.p1) <= 1e-12 * 3 && off_box(&b, r.p2) <= 1e-12 * 3);
+}
+
 int main(void)
 {
     test_init();
     const struct CMUnitTest tests[] = {cmocka_unit_test(test_face_to_face), cmocka_unit_test(test_edge_to_edge),
-                                       cmocka_unit_test(test_vertex_to_face), cmocka_unit_test(test_inside_and_cross)};
+                                       cmocka_unit_test(test_vertex_to_face), cmocka_unit_test(test_inside_and_cross),
+                                       cmocka_unit_test(test_near_parallel_edges),
+                                       cmocka_unit_test(test_edge_across_face_tie),
+                                       cmocka_unit_test(test_tie_regression)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

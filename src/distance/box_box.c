@@ -8,6 +8,14 @@
  * vertex-solid or edge-edge, so min over 16 point-box and 144 segment-segment distances is exact. */
 #include "distance/box_internal.h"
 
+/* Cross-product axes a_i x b_j shorter than this (unit edges: the sine of their angle) are skipped: the
+ * face axes and the other cross axes then decide (standard SAT practice). Skipping costs at most
+ * BB_PAR_TOL x scale in depth (the Minkowski facet of two edges at angle e differs from the facets
+ * of the plane orthogonal to them by O(e x size)), well inside the 1e-9 x scale depth accuracy. */
+#define BB_PAR_TOL 1e-10
+/* |n.a_k| below this makes the support feature of a box an edge or a face (near-parallel faces). */
+#define BB_FEAT_TOL 1e-9
+
 /* Overlap of the projections of A and B on the unit axis L (negative: separated along L). */
 static double axis_overlap(const prox_bframe *A, const prox_bframe *B, prox_vec3 L)
 {
@@ -27,7 +35,7 @@ static int sat_axis(const prox_bframe *A, const prox_bframe *B, int i, prox_vec3
     else {
         prox_vec3 c = prox_v3_cross(A->a[(i - 6) / 3], B->a[(i - 6) % 3]);
         double n = prox_v3_norm(c);
-        if (!(n > 1e-300)) return 0; /* parallel edges: covered by the face normals */
+        if (!(n > BB_PAR_TOL)) return 0; /* near-parallel edges: see BB_PAR_TOL */
         *L = prox_v3_divs(c, n);
     }
     return 1;
@@ -142,7 +150,7 @@ static int support_feature(const prox_bframe *F, prox_vec3 n, prox_vec3 out[4])
     int free_k[2], nf = 0;
     for (int k = 0; k < 3; ++k) {
         double c = prox_v3_dot(n, F->a[k]);
-        if (fabs(c) <= 1e-12) {
+        if (fabs(c) <= BB_FEAT_TOL) {
             if (nf < 2) free_k[nf++] = k;
             l[k] = 0.0;
         } else l[k] = c > 0.0 ? F->h[k] : -F->h[k];
@@ -175,23 +183,54 @@ static int clip_poly(prox_vec3 *poly, int n, prox_vec3 a, double c)
 }
 
 /* Witness on the feature of S (support in direction dir) that lies under the face k of F: the
- * feature clipped by F's side slabs, averaged. */
-static prox_vec3 face_witness(const prox_bframe *F, int k, const prox_bframe *S, prox_vec3 dir)
+ * feature clipped by F's side slabs, averaged. Returns 0 when nothing of the feature lies under the
+ * face (the axis is then not the facet that realises the depth). */
+static int face_witness(const prox_bframe *F, int k, const prox_bframe *S, prox_vec3 dir, prox_vec3 *w)
 {
     prox_vec3 poly[8];
     int n = support_feature(S, dir, poly);
-    prox_vec3 avg0 = {0, 0, 0};
-    for (int i = 0; i < n; ++i) avg0 = prox_v3_mad(avg0, 1.0 / n, poly[i]);
     for (int j = 0; j < 3 && n > 0; ++j) {
         if (j == k) continue;
         double c = prox_v3_dot(F->a[j], F->m);
         n = clip_poly(poly, n, F->a[j], c + F->h[j]);
         if (n > 0) n = clip_poly(poly, n, prox_v3_neg(F->a[j]), F->h[j] - c);
     }
-    if (n == 0) return avg0;
+    if (n == 0) return 0;
     prox_vec3 avg = {0, 0, 0};
     for (int i = 0; i < n; ++i) avg = prox_v3_mad(avg, 1.0 / n, poly[i]);
-    return avg;
+    *w = avg;
+    return 1;
+}
+
+/* Witnesses p1 in A, p2 = p1 - o n in B for SAT axis i (unit n from A towards B, overlap o). Returns 0
+ * when the axis does not realise the depth: nothing of the opposite support feature under the face,
+ * or two support edges that do not cross (closest points at an end, off the axis). */
+static int axis_witness(const prox_bframe *A, const prox_bframe *B, int i, prox_vec3 n, double o, double tol,
+                        prox_vec3 *p1, prox_vec3 *p2)
+{
+    if (i < 3) { /* face of A: B's deepest feature under it */
+        if (!face_witness(A, i, B, prox_v3_neg(n), p2)) return 0;
+        *p1 = prox_v3_mad(*p2, o, n);
+        return 1;
+    }
+    if (i < 6) { /* face of B: A's deepest feature under it */
+        if (!face_witness(B, i - 3, A, n, p1)) return 0;
+        *p2 = prox_v3_mad(*p1, -o, n);
+        return 1;
+    }
+    /* edge-edge: the support edges of A (along n) and B (along -n) */
+    int ea = (i - 6) / 3, eb = (i - 6) % 3;
+    double la[3], lb[3];
+    for (int k = 0; k < 3; ++k) {
+        la[k] = prox_v3_dot(n, A->a[k]) >= 0.0 ? A->h[k] : -A->h[k];
+        lb[k] = prox_v3_dot(n, B->a[k]) <= 0.0 ? B->h[k] : -B->h[k];
+    }
+    la[ea] = -A->h[ea];
+    lb[eb] = -B->h[eb];
+    prox_vec3 pa = prox_bframe_point(A, la), pb = prox_bframe_point(B, lb);
+    prox_vec3 qa = prox_v3_mad(pa, 2.0 * A->h[ea], A->a[ea]), qb = prox_v3_mad(pb, 2.0 * B->h[eb], B->a[eb]);
+    prox_seg_seg(pa, qa, pb, qb, p1, p2);
+    return prox_v3_dist(*p2, prox_v3_mad(*p1, -o, n)) <= tol;
 }
 
 PROX_API prox_signed_result prox_box_box_signed_distance(const prox_box *a, const prox_box *b)
@@ -200,10 +239,6 @@ PROX_API prox_signed_result prox_box_box_signed_distance(const prox_box *a, cons
     prox_distance_result d = prox_box_box_distance(a, b);
     r.status = d.status;
     if (r.status != PROX_OK) return r;
-    prox_bframe A = prox_bframe_make(a), B = prox_bframe_make(b);
-    int i = 0;
-    prox_vec3 n = {0, 0, 0};
-    double o = sat_min_overlap(&A, &B, &i, &n);
     if (!d.intersect && d.distance > 0.0) {
         r.sd = d.distance;
         r.normal = prox_v3_divs(prox_v3_sub(d.p2, d.p1), d.distance);
@@ -211,26 +246,32 @@ PROX_API prox_signed_result prox_box_box_signed_distance(const prox_box *a, cons
         r.p2 = d.p2;
         return r;
     }
-    r.sd = -o;
-    r.normal = n;
-    if (i < 3) { /* face of A: B's deepest feature under it */
-        r.p2 = face_witness(&A, i, &B, prox_v3_neg(n));
-        r.p1 = prox_v3_mad(r.p2, o, n);
-    } else if (i < 6) { /* face of B: A's deepest feature under it */
-        r.p1 = face_witness(&B, i - 3, &A, n);
-        r.p2 = prox_v3_mad(r.p1, -o, n);
-    } else { /* edge-edge: the support edges of A (along n) and B (along -n) */
-        int ea = (i - 6) / 3, eb = (i - 6) % 3;
-        double la[3], lb[3];
-        for (int k = 0; k < 3; ++k) {
-            la[k] = prox_v3_dot(n, A.a[k]) >= 0.0 ? A.h[k] : -A.h[k];
-            lb[k] = prox_v3_dot(n, B.a[k]) <= 0.0 ? B.h[k] : -B.h[k];
-        }
-        la[ea] = -A.h[ea];
-        lb[eb] = -B.h[eb];
-        prox_vec3 pa = prox_bframe_point(&A, la), pb = prox_bframe_point(&B, lb);
-        prox_vec3 qa = prox_v3_mad(pa, 2.0 * A.h[ea], A.a[ea]), qb = prox_v3_mad(pb, 2.0 * B.h[eb], B.a[eb]);
-        prox_seg_seg(pa, qa, pb, qb, &r.p1, &r.p2);
+    /* Depth: the least overlap over the 15 axes (exact). Witness: the axes in increasing overlap until
+     * one realises it (ties between a face and an edge axis, e.g. an edge lying across a face, can put
+     * first an axis whose support features do not meet). */
+    prox_bframe A = prox_bframe_make(a), B = prox_bframe_make(b);
+    double ov[15], tol = 1e-9 * bb_scale(&A, &B);
+    prox_vec3 ax[15];
+    int order[15], m = 0;
+    for (int i = 0; i < 15; ++i) {
+        if (!sat_axis(&A, &B, i, &ax[i])) continue;
+        ov[i] = axis_overlap(&A, &B, ax[i]);
+        if (prox_v3_dot(prox_v3_sub(B.m, A.m), ax[i]) < 0.0) ax[i] = prox_v3_neg(ax[i]);
+        int j = m++;
+        for (; j > 0 && ov[order[j - 1]] > ov[i]; --j) order[j] = order[j - 1];
+        order[j] = i;
     }
+    double o = ov[order[0]];
+    r.sd = -o;
+    for (int k = 0; k < m; ++k) {
+        int i = order[k];
+        if (ov[i] > o + tol) break;
+        if (axis_witness(&A, &B, i, ax[i], o, tol, &r.p1, &r.p2)) {
+            r.normal = ax[i];
+            return r;
+        }
+    }
+    r.normal = ax[order[0]]; /* not reached in exact arithmetic: keep the least axis */
+    axis_witness(&A, &B, order[0], r.normal, o, tol, &r.p1, &r.p2);
     return r;
 }
