@@ -367,6 +367,119 @@ static void test_relation_cases(void **st)
     assert_near(rp.translation.y, 0.0, 1e-15);
 }
 
+/* Null pointers: every public entry point of query.h answers PROX_EINVAL_ARG (never a crash). */
+static void test_null_args(void **st)
+{
+    (void)st;
+    prox_sph sp = {{0, 0, 0}, 1};
+    prox_rcc rc = {{0, 0, 0}, {0, 0, 1}, 1};
+    prox_rpp rp = {0, 1, 0, 1, 0, 1};
+    prox_box bx = prox_rpp_to_box(&rp);
+    prox_shape a = prox_shape_from_sph(sp), out = a;
+    assert_int_equal(prox_shape_test(&a, NULL).status, PROX_EINVAL_ARG);
+    assert_int_equal(prox_shape_signed_distance(NULL, &a).status, PROX_EINVAL_ARG);
+    assert_int_equal(prox_shape_contains(NULL, NULL).status, PROX_EINVAL_ARG);
+    assert_int_equal(prox_shape_relation(&a, NULL, -1).status, PROX_EINVAL_ARG);
+    assert_int_equal(prox_shape_reposition(NULL, &a, 0.1).status, PROX_EINVAL_ARG);
+    assert_true(prox_shape_pair_scale(NULL, &a) == 0.0);
+    /* translate: no status in its result, so an invalid kind that every later query reports */
+    prox_shape t = prox_shape_translate(NULL, prox_v3(1, 2, 3));
+    assert_int_equal(prox_shape_validate(&t), PROX_EINVAL_SHAPE_KIND);
+    assert_int_equal(prox_shape_distance(&a, &t).status, PROX_EINVAL_SHAPE_KIND);
+    assert_int_equal(prox_shape_translated(NULL, prox_v3(1, 2, 3), &out), PROX_EINVAL_ARG);
+    assert_int_equal(prox_shape_translated(&a, prox_v3(1, 2, 3), NULL), PROX_EINVAL_ARG);
+    assert_int_equal(prox_shape_translated(&a, prox_v3(NAN, 0, 0), &out), PROX_EINVAL_NONFINITE);
+    assert_true(out.u.sph.center.x == 0.0); /* untouched on error */
+    assert_int_equal(prox_shape_translated(&a, prox_v3(1, 2, 3), &out), PROX_OK);
+    assert_near(out.u.sph.center.z, 3.0, 0.0);
+    prox_shape r = prox_shape_from_rpp(rp);
+    assert_int_equal(prox_shape_translated(&r, prox_v3(-1, 0, 0), &out), PROX_OK);
+    assert_true(out.kind == PROX_SHAPE_RPP && out.u.rpp.xmin == -1.0 && out.u.rpp.xmax == 0.0);
+    /* the specialised solvers */
+    assert_int_equal(prox_box_box_test(NULL, &bx).status, PROX_EINVAL_ARG);
+    assert_int_equal(prox_box_box_distance(&bx, NULL).status, PROX_EINVAL_ARG);
+    assert_int_equal(prox_box_box_signed_distance(NULL, &bx).status, PROX_EINVAL_ARG);
+    assert_int_equal(prox_box_sph_distance(NULL, &sp).status, PROX_EINVAL_ARG);
+    assert_int_equal(prox_box_sph_signed_distance(&bx, NULL).status, PROX_EINVAL_ARG);
+    assert_int_equal(prox_sph_sph_distance(NULL, &sp).status, PROX_EINVAL_ARG);
+    assert_int_equal(prox_sph_sph_signed_distance(&sp, NULL).status, PROX_EINVAL_ARG);
+    assert_int_equal(prox_rcc_sph_distance(NULL, &sp).status, PROX_EINVAL_ARG);
+    assert_int_equal(prox_rcc_sph_signed_distance(&rc, NULL).status, PROX_EINVAL_ARG);
+    assert_int_equal(prox_box_rcc_test(NULL, &rc).status, PROX_EINVAL_ARG);
+    assert_int_equal(prox_box_rcc_distance(&bx, NULL).status, PROX_EINVAL_ARG);
+    assert_int_equal(prox_box_rcc_signed_distance(NULL, &rc).status, PROX_EINVAL_ARG);
+    assert_int_equal(prox_box_in_box(NULL, &bx).status, PROX_EINVAL_ARG);
+    assert_int_equal(prox_box_in_rcc(&bx, NULL).status, PROX_EINVAL_ARG);
+    assert_int_equal(prox_box_in_sph(NULL, &sp).status, PROX_EINVAL_ARG);
+    assert_int_equal(prox_rcc_in_box(&rc, NULL).status, PROX_EINVAL_ARG);
+    assert_int_equal(prox_rcc_in_rcc(NULL, &rc).status, PROX_EINVAL_ARG);
+    assert_int_equal(prox_rcc_in_sph(&rc, NULL).status, PROX_EINVAL_ARG);
+    assert_int_equal(prox_sph_in_box(NULL, &bx).status, PROX_EINVAL_ARG);
+    assert_int_equal(prox_sph_in_rcc(&sp, NULL).status, PROX_EINVAL_ARG);
+    assert_int_equal(prox_sph_in_sph(NULL, &sp).status, PROX_EINVAL_ARG);
+}
+
+/* Relation convention at internal tangency (docs/algorithms/boxes_spheres.md): an inner solid touching
+ * the outer boundary from inside is nested (contact = 1, clearance 0), never "touching"; pushed out
+ * by less than tol it stays nested, by more it is crossing; the same contact from outside is touching. */
+static void expect_rel(const prox_shape *a, const prox_shape *b, prox_relation rel, int contact, double clearance)
+{
+    prox_relation_result r = prox_shape_relation(a, b, -1);
+    assert_int_equal(r.status, PROX_OK);
+    assert_int_equal(r.relation, rel);
+    assert_int_equal(r.contact, contact);
+    if (rel == PROX_REL_A_IN_B || rel == PROX_REL_B_IN_A) assert_near(r.clearance, clearance, 1e-14);
+}
+
+static void test_relation_internal_tangency(void **st)
+{
+    (void)st;
+    prox_rpp big = {-2, 2, -2, 2, -2, 2};
+    prox_shape B = prox_shape_from_rpp(big);
+    double tol = 1e-12 * 4;
+    /* sphere against the face x = 2: inside flush, nudged out by tol/4 and 1e-6, outside tangent */
+    double xs[4] = {1.5, 1.5 + tol / 4, 1.5 + 1e-6, 2.5};
+    prox_relation want[4] = {PROX_REL_A_IN_B, PROX_REL_A_IN_B, PROX_REL_CROSSING, PROX_REL_TOUCHING};
+    for (int i = 0; i < 4; ++i) {
+        prox_sph s = {{xs[i], 0.3, -0.2}, 0.5};
+        prox_shape S = prox_shape_from_sph(s);
+        expect_rel(&S, &B, want[i], 1, 2 - xs[i] - 0.5);
+        prox_relation wm = want[i] == PROX_REL_A_IN_B ? PROX_REL_B_IN_A : want[i];
+        expect_rel(&B, &S, wm, 1, 2 - xs[i] - 0.5);
+    }
+    prox_sph deep = {{0, 0, 0}, 0.5};
+    prox_shape D = prox_shape_from_sph(deep);
+    expect_rel(&D, &B, PROX_REL_A_IN_B, 0, 1.5);
+    /* identical solids: A in B with contact everywhere */
+    expect_rel(&B, &B, PROX_REL_A_IN_B, 1, 0.0);
+    /* box flush in a corner of the big box (three shared face planes) */
+    prox_rpp corner = {1, 2, 1, 2, 1, 2};
+    prox_shape C = prox_shape_from_rpp(corner);
+    expect_rel(&C, &B, PROX_REL_A_IN_B, 1, 0.0);
+    /* square inscribed in a cylinder: vertical edges on the lateral surface, ends flush with the caps */
+    prox_rcc cyl = {{0, 0, 0}, {0, 0, 3}, 1};
+    prox_shape Y = prox_shape_from_rcc(cyl);
+    double h = sqrt(0.5);
+    prox_rpp sq = {-h, h, -h, h, 0, 3};
+    prox_shape Q = prox_shape_from_rpp(sq);
+    expect_rel(&Q, &Y, PROX_REL_A_IN_B, 1, 0.0);
+    /* cylinder with both rims on a sphere: (h/2)^2 + r^2 = R^2 */
+    prox_rcc rod = {{0, 0, -0.6}, {0, 0, 1.2}, 0.8};
+    prox_sph ball = {{0, 0, 0}, 1.0};
+    prox_shape RO = prox_shape_from_rcc(rod), BA = prox_shape_from_sph(ball);
+    expect_rel(&RO, &BA, PROX_REL_A_IN_B, 1, 0.0);
+    expect_rel(&BA, &RO, PROX_REL_B_IN_A, 1, 0.0);
+    /* sphere on the inside of a cylinder's end face, and on its outside */
+    prox_sph cap_in = {{0.2, 0.1, 2.5}, 0.5}, cap_out = {{0.2, 0.1, 3.5}, 0.5};
+    prox_shape CI = prox_shape_from_sph(cap_in), CO = prox_shape_from_sph(cap_out);
+    expect_rel(&CI, &Y, PROX_REL_A_IN_B, 1, 0.0);
+    expect_rel(&CO, &Y, PROX_REL_TOUCHING, 1, 0.0);
+    /* far apart: disjoint, no contact */
+    prox_sph far = {{10, 0, 0}, 1};
+    prox_shape F = prox_shape_from_sph(far);
+    expect_rel(&F, &B, PROX_REL_DISJOINT, 0, 0.0);
+}
+
 int main(void)
 {
     test_init();
@@ -376,7 +489,8 @@ int main(void)
         cmocka_unit_test(test_random_sph_sph), cmocka_unit_test(test_random_rcc_sph),
         cmocka_unit_test(test_random_sph_rcc), cmocka_unit_test(test_random_box_rcc),
         cmocka_unit_test(test_random_rcc_box), cmocka_unit_test(test_invalid_shapes),
-        cmocka_unit_test(test_relation_cases),
+        cmocka_unit_test(test_relation_cases), cmocka_unit_test(test_null_args),
+        cmocka_unit_test(test_relation_internal_tangency),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

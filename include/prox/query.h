@@ -48,13 +48,16 @@ typedef enum prox_relation {
     PROX_REL_B_IN_A        ///< B is nested in A
 } prox_relation;
 
-/// Result of prox_shape_relation.
+/// Result of prox_shape_relation. Convention (docs/algorithms/boxes_spheres.md): nested takes precedence
+/// over touching: an inner solid touching the outer boundary from inside (clearance in [-tol, tol]) is
+/// A_IN_B / B_IN_A with `contact` = 1; TOUCHING is reserved for contact from outside.
 typedef struct prox_relation_result {
     prox_status status;
     prox_relation relation;
     double signed_distance; ///< > 0 distance, <= 0 minus the penetration depth
     double clearance;       ///< nested: clearance of the inner solid inside the outer one
     double tol;             ///< the absolute tolerance used
+    int contact;            ///< 1 when the boundaries meet: touching, crossing, or nested with clearance <= tol
 } prox_relation_result;
 
 /// Result of prox_shape_reposition.
@@ -79,13 +82,18 @@ PROX_API prox_distance_result prox_shape_distance(const prox_shape *a, const pro
 PROX_API prox_signed_result prox_shape_signed_distance(const prox_shape *a, const prox_shape *b);
 /// Does A lie entirely inside B (any position and orientation)?
 PROX_API prox_contain_result prox_shape_contains(const prox_shape *a, const prox_shape *b);
-/// Disjoint, touching, crossing or nested. tol < 0 selects PROX_QUERY_REL_TOL x scale.
+/// Disjoint, touching, crossing or nested. tol < 0 selects PROX_QUERY_REL_TOL x scale; tol >= 0 is used
+/// as given (tol = 0 leaves flush contacts to rounding). Nested wins over touching (see the result).
 PROX_API prox_relation_result prox_shape_relation(const prox_shape *a, const prox_shape *b, double tol);
 /// The translation to apply to B so that it clears A by `margin` (>= 0): zero when it already does,
 /// otherwise (margin - sd) along the signed-distance normal (the TRX "prescription to reposition").
 PROX_API prox_reposition_result prox_shape_reposition(const prox_shape *a, const prox_shape *b, double margin);
-/// B translated by t (any kind; an RPP stays an RPP).
+/// B translated by t (any kind; an RPP stays an RPP). A null s gives a shape of invalid kind, so that
+/// any query on it reports PROX_EINVAL_SHAPE_KIND; prox_shape_translated reports the status itself.
 PROX_API prox_shape prox_shape_translate(const prox_shape *s, prox_vec3 t);
+/// *out = s translated by t. PROX_EINVAL_ARG for a null pointer, PROX_EINVAL_NONFINITE for a non-finite
+/// t, otherwise the validation status of the translated shape (*out is written only when PROX_OK).
+PROX_API prox_status prox_shape_translated(const prox_shape *s, prox_vec3 t, prox_shape *out);
 
 /* ---- Specialised pair solvers (validated inputs; public so that bench/ can time them) ---- */
 

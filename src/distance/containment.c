@@ -59,9 +59,18 @@ static prox_contain_result finish(prox_status st, double clear, const prox_shape
 
 static prox_status valid2(prox_status x, prox_status y) { return x != PROX_OK ? x : y; }
 
+/* Result of invalid input. */
+static prox_contain_result fail(prox_status st)
+{
+    prox_contain_result r = {0};
+    r.status = st;
+    return r;
+}
+
 PROX_API prox_contain_result prox_box_in_box(const prox_box *a, const prox_box *b)
 {
     prox_status st = valid2(prox_box_validate(a), prox_box_validate(b));
+    if (st != PROX_OK) return fail(st); /* before any dereference: null inputs */
     double c = INFINITY;
     if (st == PROX_OK) {
         prox_bframe A = prox_bframe_make(a), B = prox_bframe_make(b);
@@ -74,6 +83,7 @@ PROX_API prox_contain_result prox_box_in_box(const prox_box *a, const prox_box *
 PROX_API prox_contain_result prox_box_in_rcc(const prox_box *a, const prox_rcc *b)
 {
     prox_status st = valid2(prox_box_validate(a), prox_rcc_validate(b));
+    if (st != PROX_OK) return fail(st); /* before any dereference: null inputs */
     double c = INFINITY;
     if (st == PROX_OK) {
         prox_bframe A = prox_bframe_make(a);
@@ -87,6 +97,7 @@ PROX_API prox_contain_result prox_box_in_rcc(const prox_box *a, const prox_rcc *
 PROX_API prox_contain_result prox_box_in_sph(const prox_box *a, const prox_sph *b)
 {
     prox_status st = valid2(prox_box_validate(a), prox_sph_validate(b));
+    if (st != PROX_OK) return fail(st); /* before any dereference: null inputs */
     double c = INFINITY;
     if (st == PROX_OK) {
         prox_bframe A = prox_bframe_make(a);
@@ -99,6 +110,7 @@ PROX_API prox_contain_result prox_box_in_sph(const prox_box *a, const prox_sph *
 PROX_API prox_contain_result prox_sph_in_box(const prox_sph *a, const prox_box *b)
 {
     prox_status st = valid2(prox_sph_validate(a), prox_box_validate(b));
+    if (st != PROX_OK) return fail(st); /* before any dereference: null inputs */
     double c = INFINITY;
     if (st == PROX_OK) {
         prox_bframe B = prox_bframe_make(b);
@@ -111,6 +123,7 @@ PROX_API prox_contain_result prox_sph_in_box(const prox_sph *a, const prox_box *
 PROX_API prox_contain_result prox_sph_in_rcc(const prox_sph *a, const prox_rcc *b)
 {
     prox_status st = valid2(prox_sph_validate(a), prox_rcc_validate(b));
+    if (st != PROX_OK) return fail(st); /* before any dereference: null inputs */
     double c = INFINITY;
     if (st == PROX_OK) {
         cyl_geom g = cyl_geom_make(b);
@@ -123,6 +136,7 @@ PROX_API prox_contain_result prox_sph_in_rcc(const prox_sph *a, const prox_rcc *
 PROX_API prox_contain_result prox_sph_in_sph(const prox_sph *a, const prox_sph *b)
 {
     prox_status st = valid2(prox_sph_validate(a), prox_sph_validate(b));
+    if (st != PROX_OK) return fail(st); /* before any dereference: null inputs */
     double c = INFINITY;
     if (st == PROX_OK) c = b->radius - prox_v3_dist(a->center, b->center) - a->radius;
     prox_shape sa = prox_shape_from_sph(*a), sb = prox_shape_from_sph(*b);
@@ -135,6 +149,7 @@ static prox_vec3 rim_center(const cyl_geom *g, int top) { return prox_v3_mad(g->
 PROX_API prox_contain_result prox_rcc_in_box(const prox_rcc *a, const prox_box *b)
 {
     prox_status st = valid2(prox_rcc_validate(a), prox_box_validate(b));
+    if (st != PROX_OK) return fail(st); /* before any dereference: null inputs */
     double c = INFINITY;
     if (st == PROX_OK) { /* support of the rim along +-a_k: |gamma_k| + r |a_k - (a_k.w) w| */
         cyl_geom g = cyl_geom_make(a);
@@ -153,6 +168,7 @@ PROX_API prox_contain_result prox_rcc_in_box(const prox_rcc *a, const prox_box *
 PROX_API prox_contain_result prox_rcc_in_sph(const prox_rcc *a, const prox_sph *b)
 {
     prox_status st = valid2(prox_rcc_validate(a), prox_sph_validate(b));
+    if (st != PROX_OK) return fail(st); /* before any dereference: null inputs */
     double c = INFINITY;
     if (st == PROX_OK) { /* farthest rim point from the centre: sqrt(axial^2 + (rho + r)^2) */
         cyl_geom g = cyl_geom_make(a);
@@ -189,6 +205,7 @@ static double rim_max_axis_dist(const prox_fcircle *C, prox_vec3 base, prox_vec3
 PROX_API prox_contain_result prox_rcc_in_rcc(const prox_rcc *a, const prox_rcc *b)
 {
     prox_status st = valid2(prox_rcc_validate(a), prox_rcc_validate(b));
+    if (st != PROX_OK) return fail(st); /* before any dereference: null inputs */
     double c = INFINITY;
     if (st == PROX_OK) { /* each rim: axial extent t_c +- r |w_B - (w_B.w_A) w_A|, radial max distance */
         cyl_geom A = cyl_geom_make(a), B = cyl_geom_make(b);

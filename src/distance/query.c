@@ -175,14 +175,21 @@ PROX_API prox_relation_result prox_shape_relation(const prox_shape *a, const pro
         r.relation = PROX_REL_DISJOINT;
         return r;
     }
+    /* Nested first: an inner solid touching the outer boundary from inside is nested (contact = 1), so
+     * a pair is never both "touching" and nested; identical solids are A_IN_B. */
     prox_contain_result ab = prox_shape_contains(a, b), ba = prox_shape_contains(b, a);
     if (ab.clearance >= -r.tol) {
         r.relation = PROX_REL_A_IN_B;
         r.clearance = ab.clearance;
+        r.contact = ab.clearance <= r.tol;
     } else if (ba.clearance >= -r.tol) {
         r.relation = PROX_REL_B_IN_A;
         r.clearance = ba.clearance;
-    } else r.relation = s.sd >= -r.tol ? PROX_REL_TOUCHING : PROX_REL_CROSSING;
+        r.contact = ba.clearance <= r.tol;
+    } else {
+        r.relation = s.sd >= -r.tol ? PROX_REL_TOUCHING : PROX_REL_CROSSING;
+        r.contact = 1;
+    }
     return r;
 }
 
@@ -204,7 +211,8 @@ PROX_API prox_reposition_result prox_shape_reposition(const prox_shape *a, const
     return r;
 }
 
-PROX_API prox_shape prox_shape_translate(const prox_shape *s, prox_vec3 t)
+/* s moved by t, by kind (no validation). */
+static prox_shape translate(const prox_shape *s, prox_vec3 t)
 {
     prox_shape o = *s;
     switch (s->kind) {
@@ -218,4 +226,24 @@ PROX_API prox_shape prox_shape_translate(const prox_shape *s, prox_vec3 t)
         break;
     }
     return o;
+}
+
+PROX_API prox_shape prox_shape_translate(const prox_shape *s, prox_vec3 t)
+{
+    if (!s) { /* no status to return: an invalid kind makes every later query say so */
+        prox_shape o = {0};
+        o.kind = (prox_shape_kind)-1;
+        return o;
+    }
+    return translate(s, t);
+}
+
+PROX_API prox_status prox_shape_translated(const prox_shape *s, prox_vec3 t, prox_shape *out)
+{
+    if (!s || !out) return PROX_EINVAL_ARG;
+    if (!prox_v3_isfinite(t)) return PROX_EINVAL_NONFINITE;
+    prox_shape o = translate(s, t);
+    prox_status st = prox_shape_validate(&o);
+    if (st == PROX_OK) *out = o;
+    return st;
 }
