@@ -19,7 +19,16 @@ static void test_rcc_validate(void **state)
     c.axis = prox_v3(0, INFINITY, 0);
     assert_int_equal(prox_rcc_validate(&c), PROX_EINVAL_NONFINITE);
     c.axis = prox_v3(1.5e308, 1.5e308, 0); /* finite parts, length overflows */
-    assert_int_equal(prox_rcc_validate(&c), PROX_EINVAL_NONFINITE);
+    assert_int_equal(prox_rcc_validate(&c), PROX_EINVAL_RANGE);
+    c.axis = prox_v3(0, 0, 1e-120); /* too short for the supported range */
+    assert_int_equal(prox_rcc_validate(&c), PROX_EINVAL_RANGE);
+    c.axis = prox_v3(0, 0, 1);
+    c.base = prox_v3(2e100, 0, 0);
+    assert_int_equal(prox_rcc_validate(&c), PROX_EINVAL_RANGE);
+    c.base = prox_v3(0, 0, 0);
+    c.radius = 1e-101;
+    assert_int_equal(prox_rcc_validate(&c), PROX_EINVAL_RANGE);
+    c.radius = 1;
     c.axis = prox_v3(0, 0, 1);
     c.base.x = NAN;
     assert_int_equal(prox_rcc_validate(&c), PROX_EINVAL_NONFINITE);
@@ -55,6 +64,9 @@ static void test_rpp_sph_validate(void **state)
     assert_int_equal(prox_sph_validate(&s), PROX_OK);
     s.radius = 0;
     assert_int_equal(prox_sph_validate(&s), PROX_EINVAL_RADIUS);
+    s.radius = 1e101;
+    assert_int_equal(prox_sph_validate(&s), PROX_EINVAL_RANGE);
+    s.radius = 0;
     prox_shape g = prox_shape_from_sph(s);
     assert_int_equal(prox_shape_validate(&g), PROX_EINVAL_RADIUS);
     g.kind = (prox_shape_kind)42;

@@ -44,6 +44,12 @@ typedef struct prox_shape {
     } u;
 } prox_shape;
 
+/// Supported range: |coordinate| <= PROX_MAX_COORD and every size (radius, height, edge length, RPP
+/// extent) in [PROX_MIN_SIZE, PROX_MAX_COORD]. Within it no intermediate product of the solvers can
+/// overflow or underflow; outside it the validators return PROX_EINVAL_RANGE.
+#define PROX_MAX_COORD 1e100
+#define PROX_MIN_SIZE 1e-100
+
 /// Relative tolerance for box edge orthogonality: |e_i . e_j| <= tol |e_i| |e_j|.
 #define PROX_BOX_ORTHO_TOL 1e-9
 

@@ -19,6 +19,7 @@ typedef enum prox_status {
     PROX_EINVAL_BOX_ORTHO,    ///< box edge vectors are not mutually orthogonal
     PROX_EINVAL_RPP_BOUNDS,   ///< RPP has min >= max on some axis
     PROX_EINVAL_ARG,          ///< a null pointer or an out-of-range argument
+    PROX_EINVAL_RANGE,        ///< a coordinate or size outside the supported range (see shapes.h)
     PROX_EINVAL_SHAPE_KIND,   ///< unknown shape kind in a generic shape
     PROX_ENUMERIC,            ///< an internal numerical method failed (e.g. GSL's QR did not converge)
     PROX_ENOMEM,              ///< allocation failed

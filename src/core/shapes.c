@@ -2,15 +2,20 @@
 #include "prox/shapes.h"
 
 static int finite3(prox_vec3 v) { return prox_v3_isfinite(v); }
+/* Inside the supported range (shapes.h). */
+static int coord_ok(double x) { return fabs(x) <= PROX_MAX_COORD; }
+static int coord3_ok(prox_vec3 v) { return coord_ok(v.x) && coord_ok(v.y) && coord_ok(v.z); }
+static int size_ok(double s) { return s >= PROX_MIN_SIZE && s <= PROX_MAX_COORD; }
 
 PROX_API prox_status prox_rcc_validate(const prox_rcc *c)
 {
     if (!c) return PROX_EINVAL_ARG;
     if (!finite3(c->base) || !finite3(c->axis) || !isfinite(c->radius)) return PROX_EINVAL_NONFINITE;
     if (!(c->radius > 0.0)) return PROX_EINVAL_RADIUS;
+    if (!coord3_ok(c->base) || !coord3_ok(c->axis)) return PROX_EINVAL_RANGE;
     double h = prox_v3_norm(c->axis);
     if (!(h > 0.0)) return PROX_EINVAL_AXIS;
-    if (!isfinite(h)) return PROX_EINVAL_NONFINITE; /* components finite but the length overflows */
+    if (!size_ok(h) || !size_ok(c->radius)) return PROX_EINVAL_RANGE;
     return PROX_OK;
 }
 
@@ -19,11 +24,14 @@ PROX_API prox_status prox_box_validate(const prox_box *b)
     if (!b) return PROX_EINVAL_ARG;
     if (!finite3(b->corner)) return PROX_EINVAL_NONFINITE;
     double len[3];
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < 3; ++i)
         if (!finite3(b->edge[i])) return PROX_EINVAL_NONFINITE;
+    if (!coord3_ok(b->corner)) return PROX_EINVAL_RANGE;
+    for (int i = 0; i < 3; ++i) {
+        if (!coord3_ok(b->edge[i])) return PROX_EINVAL_RANGE;
         len[i] = prox_v3_norm(b->edge[i]);
         if (!(len[i] > 0.0)) return PROX_EINVAL_BOX_EDGE;
-        if (!isfinite(len[i])) return PROX_EINVAL_NONFINITE;
+        if (!size_ok(len[i])) return PROX_EINVAL_RANGE;
     }
     for (int i = 0; i < 3; ++i) {
         int j = (i + 1) % 3;
@@ -43,6 +51,10 @@ PROX_API prox_status prox_rpp_validate(const prox_rpp *r)
         if (!isfinite(v[i])) return PROX_EINVAL_NONFINITE;
     for (int i = 0; i < 3; ++i)
         if (!(v[2 * i] < v[2 * i + 1])) return PROX_EINVAL_RPP_BOUNDS;
+    for (int i = 0; i < 6; ++i)
+        if (!coord_ok(v[i])) return PROX_EINVAL_RANGE;
+    for (int i = 0; i < 3; ++i)
+        if (!size_ok(v[2 * i + 1] - v[2 * i])) return PROX_EINVAL_RANGE;
     return PROX_OK;
 }
 
@@ -51,6 +63,7 @@ PROX_API prox_status prox_sph_validate(const prox_sph *s)
     if (!s) return PROX_EINVAL_ARG;
     if (!finite3(s->center) || !isfinite(s->radius)) return PROX_EINVAL_NONFINITE;
     if (!(s->radius > 0.0)) return PROX_EINVAL_RADIUS;
+    if (!coord3_ok(s->center) || !size_ok(s->radius)) return PROX_EINVAL_RANGE;
     return PROX_OK;
 }
 

@@ -12,6 +12,9 @@ PROX_API const char *prox_status_str(prox_status s)
     case PROX_EINVAL_BOX_ORTHO: return "invalid input: box edge vectors are not mutually orthogonal";
     case PROX_EINVAL_RPP_BOUNDS: return "invalid input: RPP needs min < max on every axis";
     case PROX_EINVAL_ARG: return "invalid argument: null pointer or value out of range";
+    case PROX_EINVAL_RANGE:
+        return "invalid input: a coordinate or size is outside the supported range "
+               "(|coordinate| <= 1e100, sizes 1e-100..1e100)";
     case PROX_EINVAL_SHAPE_KIND: return "invalid input: unknown shape kind";
     case PROX_ENUMERIC: return "numerical failure: an internal solver did not converge";
     case PROX_ENOMEM: return "out of memory";
