@@ -4,52 +4,26 @@
  * plane, scaled to radius r. The distance is hypot(height, rho - r) with rho the distance of p from the
  * axis. When rho = 0 (p on the axis) h is constant: set = 1 and the point at th = 0 is returned.
  * Input: radius > 0; the normal is normalised (any finite non-zero vector is accepted). */
-#include "distance/stationary.h"
-
-/* Relative size below which the distance from the axis counts as zero (the set case). */
-#define AXIS_TOL (8.0 * 2.220446049250313e-16)
-
-/* Validates a circle and returns it with a unit normal. */
-static prox_status check_circle(const prox_circle *c, prox_circle *out)
-{
-    if (!c) return PROX_EINVAL_ARG;
-    if (!prox_v3_isfinite(c->center) || !prox_v3_isfinite(c->normal) || !isfinite(c->radius))
-        return PROX_EINVAL_NONFINITE;
-    if (!(c->radius > 0.0)) return PROX_EINVAL_RADIUS;
-    double n = prox_v3_norm(c->normal);
-    if (!(n > 0.0)) return PROX_EINVAL_AXIS;
-    *out = *c;
-    out->normal = prox_v3(c->normal.x / n, c->normal.y / n, c->normal.z / n);
-    return PROX_OK;
-}
-
-/* Angle of (x, y) in [0, 2pi). */
-static double angle_0_2pi(double y, double x)
-{
-    double a = atan2(y, x);
-    if (a < 0.0) a += 2.0 * PROX_PI;
-    return a < 2.0 * PROX_PI ? a : 0.0;
-}
+#include "distance/prim_common.h"
 
 PROX_API prox_prim_result prox_point_circle(prox_vec3 p, const prox_circle *c)
 {
     prox_prim_result res = {0};
-    prox_circle cc;
+    prox_fcircle f;
     if (!prox_v3_isfinite(p)) {
         res.status = PROX_EINVAL_NONFINITE;
         return res;
     }
-    if ((res.status = check_circle(c, &cc)) != PROX_OK) return res;
-    prox_fcircle f = prox_fcircle_make(cc.center, cc.normal, cc.radius);
+    if ((res.status = prox_prim_circle_frame(c, &f)) != PROX_OK) return res;
     prox_vec3 d = prox_v3_sub(p, f.c);
     double h = prox_v3_dot(d, f.n), du = prox_v3_dot(d, f.u), dv = prox_v3_dot(d, f.v);
     double rho = hypot(du, dv);
     double scale = fmax(f.r, fmax(fabs(h), prox_v3_maxabs(f.c)));
     double th = 0.0;
-    if (rho <= AXIS_TOL * scale) {
+    if (rho <= PROX_PRIM_AXIS_TOL * scale) {
         res.set = 1; /* every circle point is equidistant */
     } else {
-        th = angle_0_2pi(dv, du);
+        th = prox_prim_angle(dv, du);
     }
     res.p1 = p;
     res.p2 = res.set ? prox_v3_mad(f.c, f.r, f.u)

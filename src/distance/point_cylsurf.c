@@ -5,56 +5,30 @@
  * angle is equidistant: set = 1, angle 0 returned.
  * Parameters of p2: s2[0] = axial parameter z (length units), s2[1] = angle in the frame of
  * prox_fcircle_make(base, dir, r). Input: radius > 0, height >= 0 (finite); dir is normalised. */
-#include "distance/stationary.h"
-
-#define AXIS_TOL (8.0 * 2.220446049250313e-16)
-
-/* Validates a cylindrical surface and returns it with a unit direction. */
-static prox_status check_cylsurf(const prox_cylsurf *s, prox_cylsurf *out)
-{
-    if (!s) return PROX_EINVAL_ARG;
-    if (!prox_v3_isfinite(s->base) || !prox_v3_isfinite(s->dir) || !isfinite(s->radius) ||
-        !isfinite(s->height))
-        return PROX_EINVAL_NONFINITE;
-    if (!(s->radius > 0.0)) return PROX_EINVAL_RADIUS;
-    if (!(s->height >= 0.0)) return PROX_EINVAL_ARG;
-    double n = prox_v3_norm(s->dir);
-    if (!(n > 0.0)) return PROX_EINVAL_AXIS;
-    *out = *s;
-    out->dir = prox_v3(s->dir.x / n, s->dir.y / n, s->dir.z / n);
-    return PROX_OK;
-}
-
-/* Angle of (x, y) in [0, 2pi). */
-static double angle_0_2pi(double y, double x)
-{
-    double a = atan2(y, x);
-    if (a < 0.0) a += 2.0 * PROX_PI;
-    return a < 2.0 * PROX_PI ? a : 0.0;
-}
+#include "distance/prim_common.h"
 
 PROX_API prox_prim_result prox_point_cylsurf(prox_vec3 p, const prox_cylsurf *s)
 {
     prox_prim_result res = {0};
-    prox_cylsurf cs;
+    prox_vec3 w;
     if (!prox_v3_isfinite(p)) {
         res.status = PROX_EINVAL_NONFINITE;
         return res;
     }
-    if ((res.status = check_cylsurf(s, &cs)) != PROX_OK) return res;
-    prox_fcircle f = prox_fcircle_make(cs.base, cs.dir, cs.radius);
+    if ((res.status = prox_prim_cylsurf_check(s, 1, &w)) != PROX_OK) return res;
+    prox_fcircle f = prox_fcircle_make(s->base, w, s->radius);
     prox_vec3 q = prox_v3_sub(p, f.c);
     double z = prox_v3_dot(q, f.n), du = prox_v3_dot(q, f.u), dv = prox_v3_dot(q, f.v);
     double rho = hypot(du, dv);
-    double zc = z < 0.0 ? 0.0 : (z > cs.height ? cs.height : z);
-    double scale = fmax(f.r, fmax(fabs(z), fmax(cs.height, prox_v3_maxabs(f.c))));
+    double zc = z < 0.0 ? 0.0 : (z > s->height ? s->height : z);
+    double scale = fmax(f.r, fmax(fabs(z), fmax(s->height, prox_v3_maxabs(f.c))));
     double cu = 1.0, cv = 0.0, th = 0.0;
-    if (rho <= AXIS_TOL * scale) {
+    if (rho <= PROX_PRIM_AXIS_TOL * scale) {
         res.set = 1;
     } else {
         cu = du / rho;
         cv = dv / rho;
-        th = angle_0_2pi(dv, du);
+        th = prox_prim_angle(dv, du);
     }
     prox_vec3 axis_pt = prox_v3_mad(f.c, zc, f.n);
     res.p1 = p;

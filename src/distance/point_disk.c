@@ -4,40 +4,17 @@
  * rim (the P(C, .) fallback of Sec. 3.2). The minimiser is unique (the disk is convex), so set = 0.
  * Parameters of p2: s2[0] = angle (0 when p projects onto the centre), s2[1] = radial distance in length
  * units. Input: radius > 0; the normal is normalised. */
-#include "distance/stationary.h"
-
-/* Validates a disk and returns it with a unit normal. */
-static prox_status check_disk(const prox_disk *c, prox_disk *out)
-{
-    if (!c) return PROX_EINVAL_ARG;
-    if (!prox_v3_isfinite(c->center) || !prox_v3_isfinite(c->normal) || !isfinite(c->radius))
-        return PROX_EINVAL_NONFINITE;
-    if (!(c->radius > 0.0)) return PROX_EINVAL_RADIUS;
-    double n = prox_v3_norm(c->normal);
-    if (!(n > 0.0)) return PROX_EINVAL_AXIS;
-    *out = *c;
-    out->normal = prox_v3(c->normal.x / n, c->normal.y / n, c->normal.z / n);
-    return PROX_OK;
-}
-
-/* Angle of (x, y) in [0, 2pi). */
-static double angle_0_2pi(double y, double x)
-{
-    double a = atan2(y, x);
-    if (a < 0.0) a += 2.0 * PROX_PI;
-    return a < 2.0 * PROX_PI ? a : 0.0;
-}
+#include "distance/prim_common.h"
 
 PROX_API prox_prim_result prox_point_disk(prox_vec3 p, const prox_disk *d)
 {
     prox_prim_result res = {0};
-    prox_disk dd;
+    prox_fcircle f;
     if (!prox_v3_isfinite(p)) {
         res.status = PROX_EINVAL_NONFINITE;
         return res;
     }
-    if ((res.status = check_disk(d, &dd)) != PROX_OK) return res;
-    prox_fcircle f = prox_fcircle_make(dd.center, dd.normal, dd.radius);
+    if ((res.status = prox_prim_circle_frame(d, &f)) != PROX_OK) return res;
     prox_vec3 q = prox_v3_sub(p, f.c);
     double h = prox_v3_dot(q, f.n), du = prox_v3_dot(q, f.u), dv = prox_v3_dot(q, f.v);
     double rho = hypot(du, dv);
@@ -52,7 +29,7 @@ PROX_API prox_prim_result prox_point_disk(prox_vec3 p, const prox_disk *d)
         res.distance = hypot(h, rho - f.r);
         res.s2[1] = f.r;
     }
-    res.s2[0] = rho > 0.0 ? angle_0_2pi(dv, du) : 0.0;
+    res.s2[0] = rho > 0.0 ? prox_prim_angle(dv, du) : 0.0;
     res.status = PROX_OK;
     return res;
 }

@@ -1,0 +1,90 @@
+/* Internal: input validation, frames and angle conventions shared by the primitive solvers
+ * (point_*.c, segment_*.c, cylsurf_cylsurf.c, disk_*.c, circle_*.c). One copy of each rule, so that
+ * every primitive entry point rejects the same inputs with the same status, in the same order:
+ * null pointer -> PROX_EINVAL_ARG, non-finite value -> PROX_EINVAL_NONFINITE, radius <= 0 ->
+ * PROX_EINVAL_RADIUS, zero axis / normal -> PROX_EINVAL_AXIS. */
+#ifndef PROX_DISTANCE_PRIM_COMMON_H
+#define PROX_DISTANCE_PRIM_COMMON_H
+
+#include "distance/stationary.h"
+
+/* Relative size (8 ulp x scene scale) below which the distance of a point from a circle's or surface's
+ * axis counts as zero: every angle is then equidistant (the set case). */
+#define PROX_PRIM_AXIS_TOL (8.0 * 2.220446049250313e-16)
+
+/* Angle of the direction (x, y) in [0, 2pi) (atan2 wrapped; 2pi after rounding becomes 0). */
+static inline double prox_prim_angle(double y, double x)
+{
+    double a = atan2(y, x);
+    if (a < 0.0) a += 2.0 * PROX_PI;
+    return a < 2.0 * PROX_PI ? a : 0.0;
+}
+
+/* Any finite angle wrapped into [0, 2pi). Equals prox_prim_angle(y, x) on t = atan2(y, x): fmod is
+ * exact and |atan2| < 2pi. */
+static inline double prox_prim_wrap_2pi(double t)
+{
+    t = fmod(t, 2.0 * PROX_PI);
+    if (t < 0.0) t += 2.0 * PROX_PI;
+    return t < 2.0 * PROX_PI ? t : 0.0;
+}
+
+/* v / n component-wise (the unit normal or axis from a vector of norm n > 0). */
+static inline prox_vec3 prox_prim_unit(prox_vec3 v, double n)
+{
+    return prox_v3(v.x / n, v.y / n, v.z / n);
+}
+
+/* Validates a segment: non-null, finite endpoints and a finite difference b - a (two finite points
+ * can be an overflowing distance apart). */
+static inline prox_status prox_prim_segment_check(const prox_segment *s)
+{
+    if (!s) return PROX_EINVAL_ARG;
+    if (!prox_v3_isfinite(s->a) || !prox_v3_isfinite(s->b) || !prox_v3_isfinite(prox_v3_sub(s->b, s->a)))
+        return PROX_EINVAL_NONFINITE;
+    return PROX_OK;
+}
+
+/* Validates a circle or disk (non-null, finite, radius > 0, normal non-zero); *norm = |normal|. */
+static inline prox_status prox_prim_circle_check(const prox_circle *c, double *norm)
+{
+    if (!c) return PROX_EINVAL_ARG;
+    if (!prox_v3_isfinite(c->center) || !prox_v3_isfinite(c->normal) || !isfinite(c->radius))
+        return PROX_EINVAL_NONFINITE;
+    if (!(c->radius > 0.0)) return PROX_EINVAL_RADIUS;
+    double n = prox_v3_norm(c->normal);
+    if (!(n > 0.0)) return PROX_EINVAL_AXIS;
+    *norm = n;
+    return PROX_OK;
+}
+
+/* Validates a circle or disk and returns its frame (prox_fcircle_make) with the normal divided by
+ * its norm. */
+static inline prox_status prox_prim_circle_frame(const prox_circle *c, prox_fcircle *f)
+{
+    double n;
+    prox_status st = prox_prim_circle_check(c, &n);
+    if (st != PROX_OK) return st;
+    *f = prox_fcircle_make(c->center, prox_prim_unit(c->normal, n), c->radius);
+    return PROX_OK;
+}
+
+/* Validates a cylindrical surface (non-null, finite base / dir / radius, radius > 0, dir non-zero) and
+ * returns its unit axis in *w. with_height: the finite surface, height must also be finite
+ * (PROX_EINVAL_NONFINITE) and >= 0 (PROX_EINVAL_ARG, checked after the radius); otherwise the
+ * surface is infinite and the height is ignored. */
+static inline prox_status prox_prim_cylsurf_check(const prox_cylsurf *s, int with_height, prox_vec3 *w)
+{
+    if (!s) return PROX_EINVAL_ARG;
+    if (!prox_v3_isfinite(s->base) || !prox_v3_isfinite(s->dir) || !isfinite(s->radius) ||
+        (with_height && !isfinite(s->height)))
+        return PROX_EINVAL_NONFINITE;
+    if (!(s->radius > 0.0)) return PROX_EINVAL_RADIUS;
+    if (with_height && !(s->height >= 0.0)) return PROX_EINVAL_ARG;
+    double n = prox_v3_norm(s->dir);
+    if (!(n > 0.0)) return PROX_EINVAL_AXIS;
+    *w = prox_prim_unit(s->dir, n);
+    return PROX_OK;
+}
+
+#endif
