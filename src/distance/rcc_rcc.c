@@ -229,11 +229,16 @@ static void cand_rim_disk(query *q, const cyl *rc, int rend, const cyl *dc, int 
 {
     const prox_fcircle *C = &rc->rim[rend];
     prox_vec3 m = dc->w, D = dc->cap[dend];
+    /* The rim projects onto the disk plane inside the circle of radius r around its centre's
+     * projection: when that circle misses the disk, no candidate can exist. */
+    prox_vec3 cd = prox_v3_sub(C->c, D);
+    double hc = prox_v3_dot(cd, m), reach = C->r + dc->r;
+    if (prox_v3_norm2(cd) - hc * hc > reach * reach) return;
     double outward = dend ? 1.0 : -1.0; /* outward normal of the disk is outward * m */
     double mu = prox_v3_dot(m, C->u), mv = prox_v3_dot(m, C->v);
     double amp = prox_hypot2(mu, mv);
     /* Lower bound: the rim's heights over the disk plane lie within r * amp of its centre's height. */
-    if (q->have_best && fabs(prox_v3_dot(prox_v3_sub(C->c, D), m)) - C->r * amp >= q->best.d) return;
+    if (q->have_best && fabs(hc) - C->r * amp >= q->best.d) return;
     prox_vec3 dirs[2];
     int nd;
     if (amp > 64.0 * DBL_EPSILON) { /* the two extreme points */
