@@ -16,7 +16,7 @@
  * the two endpoints against the circle (point_circle.c); the constrained minimum of
  * |P(th) - a - t(b - a)|^2 over t in [0, 1] is one of those. */
 #include "core/poly.h"
-#include "distance/stationary.h"
+#include "distance/prim_common.h"
 
 #include <float.h>
 #include <stddef.h>
@@ -54,14 +54,6 @@ static double cl_polish(const cl_coef *k, double th)
         if (fabs(step) <= 4.0 * DBL_EPSILON * (1.0 + fabs(th))) break;
     }
     return best;
-}
-
-/* Wraps an angle into [0, 2pi). */
-static double wrap_2pi(double a)
-{
-    a = fmod(a, 2.0 * PROX_PI);
-    if (a < 0.0) a += 2.0 * PROX_PI;
-    return a < 2.0 * PROX_PI ? a : 0.0;
 }
 
 /* Sorts, merges angles closer than CL_DEDUP (also across 0 / 2pi) and keeps at most 4 (smallest |h|). */
@@ -136,25 +128,11 @@ int prox_circle_line_stationary(const prox_fcircle *c, prox_vec3 p, prox_vec3 w,
     } else {
         n = cl_grid(&k, cand);
     }
-    for (int i = 0; i < n; ++i) cand[i] = wrap_2pi(cand[i]);
+    for (int i = 0; i < n; ++i) cand[i] = prox_prim_wrap_2pi(cand[i]);
     n = cl_dedup(&k, cand, n);
     for (int i = 0; i < n; ++i) th[i] = cand[i];
     *count = n;
     return 0;
-}
-
-/* Validates a circle (normal normalised) and a segment. */
-static prox_status check_input(const prox_circle *c, const prox_segment *s, prox_fcircle *f)
-{
-    if (!c || !s) return PROX_EINVAL_ARG;
-    if (!prox_v3_isfinite(c->center) || !prox_v3_isfinite(c->normal) || !isfinite(c->radius) ||
-        !prox_v3_isfinite(s->a) || !prox_v3_isfinite(s->b) || !prox_v3_isfinite(prox_v3_sub(s->b, s->a)))
-        return PROX_EINVAL_NONFINITE;
-    if (!(c->radius > 0.0)) return PROX_EINVAL_RADIUS;
-    double n = prox_v3_norm(c->normal);
-    if (!(n > 0.0)) return PROX_EINVAL_AXIS;
-    *f = prox_fcircle_make(c->center, prox_v3(c->normal.x / n, c->normal.y / n, c->normal.z / n), c->radius);
-    return PROX_OK;
 }
 
 /* An endpoint (or axis point) x at parameter t against the circle; p1 on the circle, p2 = x. */
@@ -176,7 +154,7 @@ PROX_API prox_prim_result prox_circle_segment(const prox_circle *c, const prox_s
 {
     prox_prim_result best = {0};
     prox_fcircle f;
-    if ((best.status = check_input(c, s, &f)) != PROX_OK) return best;
+    if ((best.status = prox_prim_circle_segment_check(c, s, &f)) != PROX_OK) return best;
     best.distance = INFINITY;
     prox_vec3 d = prox_v3_sub(s->b, s->a);
     double dd = prox_v3_norm2(d);
@@ -185,8 +163,7 @@ PROX_API prox_prim_result prox_circle_segment(const prox_circle *c, const prox_s
         int n = 0;
         prox_vec3 w = prox_v3_scale(d, 1.0 / sqrt(dd));
         if (prox_circle_line_stationary(&f, s->a, w, th, &n)) { /* segment on the axis */
-            double t = prox_v3_dot(prox_v3_sub(f.c, s->a), d) / dd;
-            t = t > 0.0 ? (t < 1.0 ? t : 1.0) : 0.0;
+            double t = prox_prim_clamp01(prox_v3_dot(prox_v3_sub(f.c, s->a), d) / dd);
             consider_point(&best, &f, prox_v3_mad(s->a, t, d), t);
             best.set = 1;
         }

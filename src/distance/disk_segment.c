@@ -15,39 +15,16 @@
  * disk (the minimum |h| is attained along a sub-segment), including a segment in the plane across the
  * disk. Parameters: s1 = (angle, radial distance in length units) on the disk, s2[0] = t.
  * Input: radius > 0, normal finite non-zero (normalised). */
-#include "distance/stationary.h"
+#include "distance/prim_common.h"
 
 #define PAR_TOL 1e-12
-
-/* Validates the disk (normal normalised) and the segment. */
-static prox_status check_input(const prox_disk *c, const prox_segment *s, prox_disk *out)
-{
-    if (!c || !s) return PROX_EINVAL_ARG;
-    if (!prox_v3_isfinite(c->center) || !prox_v3_isfinite(c->normal) || !isfinite(c->radius) ||
-        !prox_v3_isfinite(s->a) || !prox_v3_isfinite(s->b) || !prox_v3_isfinite(prox_v3_sub(s->b, s->a)))
-        return PROX_EINVAL_NONFINITE;
-    if (!(c->radius > 0.0)) return PROX_EINVAL_RADIUS;
-    double n = prox_v3_norm(c->normal);
-    if (!(n > 0.0)) return PROX_EINVAL_AXIS;
-    *out = *c;
-    out->normal = prox_v3(c->normal.x / n, c->normal.y / n, c->normal.z / n);
-    return PROX_OK;
-}
-
-/* Angle of (x, y) in [0, 2pi). */
-static double angle_0_2pi(double y, double x)
-{
-    double t = atan2(y, x);
-    if (t < 0.0) t += 2.0 * PROX_PI;
-    return t < 2.0 * PROX_PI ? t : 0.0;
-}
 
 /* Radial distance of the projection of x from the centre (and its angle) in the disk frame. */
 static double radial(const prox_fcircle *f, prox_vec3 x, double *ang)
 {
     prox_vec3 q = prox_v3_sub(x, f->c);
     double du = prox_v3_dot(q, f->u), dv = prox_v3_dot(q, f->v), rho = hypot(du, dv);
-    *ang = rho > 0.0 ? angle_0_2pi(dv, du) : 0.0;
+    *ang = rho > 0.0 ? prox_prim_angle(dv, du) : 0.0;
     return rho;
 }
 
@@ -60,12 +37,11 @@ static int crossing(const prox_fcircle *f, const prox_segment *s, prox_prim_resu
     double t;
     if (ha == hb) { /* both zero: in the plane; the point nearest the centre */
         double dd = prox_v3_norm2(d);
-        t = dd > 0.0 ? prox_v3_dot(prox_v3_sub(f->c, s->a), d) / dd : 0.0;
-        t = t > 0.0 ? (t < 1.0 ? t : 1.0) : 0.0;
+        t = prox_prim_clamp01(dd > 0.0 ? prox_v3_dot(prox_v3_sub(f->c, s->a), d) / dd : 0.0);
     } else {
         t = ha / (ha - hb);
     }
-    prox_vec3 x = t == 0.0 ? s->a : (t == 1.0 ? s->b : prox_v3_mad(s->a, t, d));
+    prox_vec3 x = prox_prim_segment_point(s, t);
     double ang, rho = radial(f, x, &ang);
     if (!(rho <= f->r)) return 0;
     res->distance = 0.0;
@@ -85,17 +61,16 @@ static int parallel_over_disk(const prox_fcircle *f, const prox_segment *s)
     double len = prox_v3_norm(d);
     if (!(len > 0.0) || !(fabs(prox_v3_dot(d, f->n)) <= PAR_TOL * len)) return 0;
     prox_vec3 dp = prox_v3_reject(d, f->n), ap = prox_v3_reject(prox_v3_sub(s->a, f->c), f->n);
-    double dd = prox_v3_norm2(dp), t = dd > 0.0 ? -prox_v3_dot(ap, dp) / dd : 0.0;
-    t = t > 0.0 ? (t < 1.0 ? t : 1.0) : 0.0;
+    double dd = prox_v3_norm2(dp), t = prox_prim_clamp01(dd > 0.0 ? -prox_v3_dot(ap, dp) / dd : 0.0);
     return prox_v3_norm(prox_v3_mad(ap, t, dp)) < f->r;
 }
 
 PROX_API prox_prim_result prox_disk_segment(const prox_disk *d, const prox_segment *s)
 {
     prox_prim_result res = {0};
-    prox_disk dk;
-    if ((res.status = check_input(d, s, &dk)) != PROX_OK) return res;
-    prox_fcircle f = prox_fcircle_make(dk.center, dk.normal, dk.radius);
+    prox_fcircle f;
+    if ((res.status = prox_prim_circle_segment_check(d, s, &f)) != PROX_OK) return res;
+    prox_disk dk = {f.c, f.n, f.r}; /* unit normal */
     if (crossing(&f, s, &res)) return res; /* status is PROX_OK */
     /* Step 2: endpoints against the disk, the segment against the rim. */
     prox_prim_result best = prox_circle_segment(&dk, s);

@@ -35,6 +35,21 @@ static inline prox_vec3 prox_prim_unit(prox_vec3 v, double n)
     return prox_v3(v.x / n, v.y / n, v.z / n);
 }
 
+/* t clamped to [0, 1]; NaN gives 0. */
+static inline double prox_prim_clamp01(double t)
+{
+    return t > 0.0 ? (t < 1.0 ? t : 1.0) : 0.0;
+}
+
+/* Point of segment s at parameter t: the endpoints exactly, interior points relative to a (no
+ * cancellation from far origins). */
+static inline prox_vec3 prox_prim_segment_point(const prox_segment *s, double t)
+{
+    if (t == 0.0) return s->a;
+    if (t == 1.0) return s->b;
+    return prox_v3_mad(s->a, t, prox_v3_sub(s->b, s->a));
+}
+
 /* Validates a segment: non-null, finite endpoints and a finite difference b - a (two finite points
  * can be an overflowing distance apart). */
 static inline prox_status prox_prim_segment_check(const prox_segment *s)
@@ -67,6 +82,17 @@ static inline prox_status prox_prim_circle_frame(const prox_circle *c, prox_fcir
     if (st != PROX_OK) return st;
     *f = prox_fcircle_make(c->center, prox_prim_unit(c->normal, n), c->radius);
     return PROX_OK;
+}
+
+/* Validates a circle or disk c and a segment s together: a null pointer first, then non-finite
+ * values of either, then the circle's radius and normal; *f is c's frame (prox_prim_circle_frame). */
+static inline prox_status prox_prim_circle_segment_check(const prox_circle *c, const prox_segment *s,
+                                                         prox_fcircle *f)
+{
+    if (!c || !s) return PROX_EINVAL_ARG;
+    prox_status st = prox_prim_segment_check(s);
+    if (st != PROX_OK) return st;
+    return prox_prim_circle_frame(c, f);
 }
 
 /* Validates a cylindrical surface (non-null, finite base / dir / radius, radius > 0, dir non-zero) and
