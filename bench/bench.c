@@ -250,7 +250,8 @@ int main(int argc, char **argv)
         print_row(csv, c, &st, o.repeats);
     }
 #ifdef PROX_BENCH_HAVE_SCENE
-    if (!list && bench_selected(&o, "scene")) prox_bench_scene(csv); /* deck's scene bench (own rows) */
+    /* the scene module's bench (own rows): with no filter, or a filter naming it ("scene...") */
+    if (!list && (!o.filter || !strncmp(o.filter, "scene", 5) || strstr("scene/", o.filter))) prox_bench_scene(csv);
 #endif
     if (csv) fclose(csv);
     free(g_cases);

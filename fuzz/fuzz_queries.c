@@ -3,15 +3,20 @@
  * moderate size (|coordinates| <= 1e100) get PROX_OK and finite answers; invalid ones a named error.
  * Byte layout: 1 byte selects the pair kinds, then raw IEEE doubles (missing bytes read as zero). */
 #include <stdint.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "prox/prox.h"
 #include "prox/query.h"
 #include "prox/sat.h"
 
-#define CHECK(c)                   \
-    do {                           \
-        if (!(c)) __builtin_trap(); \
+/* A broken contract prints the condition and its line (so a crash file explains itself), then traps. */
+#define CHECK(c)                                                                     \
+    do {                                                                             \
+        if (!(c)) {                                                                  \
+            fprintf(stderr, "fuzz_queries.c:%d: contract broken: %s\n", __LINE__, #c); \
+            __builtin_trap();                                                        \
+        }                                                                            \
     } while (0)
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);

@@ -1,26 +1,40 @@
 #!/bin/sh
 # Builds the libFuzzer harnesses with clang (-fsanitize=fuzzer,address,undefined) and runs each for a
 # bounded time on its seed corpus (fuzz/corpus/<name>), e.g. `fuzz/run.sh 30` (seconds per harness,
-# default 30). Needs clang and libclang-rt-14-dev (Debian). Crashes are written to
-# $BUILD/crashes/<name>/ and make the script exit 1; each one must become a regression test in
-# tests/test_fuzz_regress.c.
+# default 30). Debian packages: clang (clang-14), libclang-rt-14-dev (the fuzzer and sanitizer
+# runtimes), libgsl-dev. The library sources are compiled once (JOBS in parallel, default 2) and
+# linked into the three harnesses. Crashes are written to $BUILD/crashes/<name>/ and make the script
+# exit 1; each one must become a regression test in tests/test_fuzz_regress.c (crash files kept for
+# the record are in fuzz/crashes/). Prints the build and run times.
 set -eu
 SECONDS_PER=${1:-30}
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 BUILD=${PROX_FUZZ_BUILD:-$ROOT/build-fuzz}
 CC=${CC:-clang}
-mkdir -p "$BUILD"
+JOBS=${JOBS:-2}
+command -v "$CC" > /dev/null || { echo "fuzz/run.sh: $CC not found (apt-get install clang libclang-rt-14-dev)"; exit 2; }
+mkdir -p "$BUILD/obj"
 FLAGS="-std=c17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -ffp-contract=off"
-FLAGS="$FLAGS -I$ROOT/include -I$ROOT/src -DPROX_STATIC"
+FLAGS="$FLAGS -I$ROOT/include -I$ROOT/src -DPROX_STATIC -D_POSIX_C_SOURCE=200809L"
 LIBSRC=$(ls "$ROOT"/src/core/*.c "$ROOT"/src/distance/*.c "$ROOT"/src/sat/*.c "$ROOT"/src/scene/*.c 2>/dev/null)
 CLISRC=$(ls "$ROOT"/src/cli/*.c | grep -v '/main.c$')
 LIBS="-lgsl -lgslcblas -lm"
+t0=$(date +%s)
+# One object per source (-fsanitize=fuzzer on a non-main object only instruments it), in parallel.
+rm -f "$BUILD"/obj/*.o
 # shellcheck disable=SC2086
-$CC $FLAGS -o "$BUILD/fuzz_queries" "$ROOT/fuzz/fuzz_queries.c" $LIBSRC $LIBS
+printf '%s\n' $LIBSRC $CLISRC | xargs -P "$JOBS" -I{} sh -c \
+    'f={}; d=$(basename "$(dirname "$f")"); exec '"$CC $FLAGS"' -c "$f" -o "'"$BUILD"'/obj/${d}_$(basename "$f" .c).o"'
+LIBOBJ=$(ls "$BUILD"/obj/*.o | grep -v '/obj/cli_')
+CLIOBJ=$(ls "$BUILD"/obj/cli_*.o)
 # shellcheck disable=SC2086
-$CC $FLAGS -o "$BUILD/fuzz_deck" "$ROOT/fuzz/fuzz_deck.c" $LIBSRC $LIBS
+$CC $FLAGS -o "$BUILD/fuzz_queries" "$ROOT/fuzz/fuzz_queries.c" $LIBOBJ $LIBS
 # shellcheck disable=SC2086
-$CC $FLAGS -D_POSIX_C_SOURCE=200809L -o "$BUILD/fuzz_pairs" "$ROOT/fuzz/fuzz_pairs.c" $CLISRC $LIBSRC $LIBS
+$CC $FLAGS -o "$BUILD/fuzz_deck" "$ROOT/fuzz/fuzz_deck.c" $LIBOBJ $LIBS
+# shellcheck disable=SC2086
+$CC $FLAGS -o "$BUILD/fuzz_pairs" "$ROOT/fuzz/fuzz_pairs.c" $CLIOBJ $LIBOBJ $LIBS
+t1=$(date +%s)
+echo "build: $((t1 - t0)) s"
 status=0
 for name in queries deck pairs; do
     work="$BUILD/corpus/$name"
@@ -34,8 +48,10 @@ for name in queries deck pairs; do
         -artifact_prefix="$crashes/" -print_final_stats=1 $extra "$work" "$ROOT/fuzz/corpus/$name" \
         > "$BUILD/fuzz_$name.log" 2>&1; then
         echo "fuzz_$name: FAILED (see $BUILD/fuzz_$name.log and $crashes)"
+        grep -E "contract broken|ERROR:|SUMMARY:" "$BUILD/fuzz_$name.log" | head -3 || true
         status=1
     fi
     grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "$BUILD/fuzz_$name.log" || true
 done
+echo "run: $(($(date +%s) - t1)) s"
 exit $status
