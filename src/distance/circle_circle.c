@@ -17,7 +17,7 @@
  * Every root (and the starts 0, pi/2, pi, 3pi/2, which cover th = pi, sent to infinity by t) is
  * polished by safeguarded Newton on h. */
 #include "core/poly.h"
-#include "distance/stationary.h"
+#include "distance/prim_common.h"
 
 #include <float.h>
 
@@ -153,14 +153,6 @@ static void cc_poly(const cc_prob *p, double F[9])
     for (int k = 0; k < 9; ++k) F[k] = L1[k] - p->r * p->r * L2[k];
 }
 
-/* Angle in [0, 2pi). */
-static double cc_wrap(double th)
-{
-    th = fmod(th, 2.0 * PROX_PI);
-    if (th < 0.0) th += 2.0 * PROX_PI;
-    return th < 2.0 * PROX_PI ? th : 0.0;
-}
-
 /* Adds th to the list unless an equal angle is there; beyond 8 keeps the 8 of smallest g. */
 static void cc_add(double th, double g, double *ths, double *gs, int *n)
 {
@@ -230,23 +222,21 @@ int prox_circle_circle_stationary(const prox_fcircle *a, const prox_fcircle *b, 
         cc_eval e;
         double t = cc_polish(&p, starts[i], &e);
         if (e.axis || !(fabs(e.h) <= tol)) continue; /* spurious root of the squared equation */
-        cc_add(cc_wrap(t), e.g, th, gs, count);
+        cc_add(prox_prim_wrap_2pi(t), e.g, th, gs, count);
     }
     double ax[2];
     int na = cc_axis_points(&p, ax);
-    for (int i = 0; i < na; ++i) cc_add(cc_wrap(ax[i]), cc_at(&p, ax[i]).g, th, gs, count);
+    for (int i = 0; i < na; ++i) cc_add(prox_prim_wrap_2pi(ax[i]), cc_at(&p, ax[i]).g, th, gs, count);
     return 0;
 }
 
-/* Validates a circle and returns its frame with a unit normal. */
+/* Validates a circle and returns its frame with a unit normal. The normal is scaled by 1 / |n|
+ * (not divided as in prox_prim_circle_frame): kept so that results stay bitwise what they were. */
 static prox_status cc_check(const prox_circle *c, prox_fcircle *out)
 {
-    if (!c) return PROX_EINVAL_ARG;
-    if (!prox_v3_isfinite(c->center) || !prox_v3_isfinite(c->normal) || !isfinite(c->radius))
-        return PROX_EINVAL_NONFINITE;
-    if (!(c->radius > 0.0)) return PROX_EINVAL_RADIUS;
-    double n = prox_v3_norm(c->normal);
-    if (!(n > 0.0)) return PROX_EINVAL_AXIS;
+    double n;
+    prox_status st = prox_prim_circle_check(c, &n);
+    if (st != PROX_OK) return st;
     *out = prox_fcircle_make(c->center, prox_v3_scale(c->normal, 1.0 / n), c->radius);
     return PROX_OK;
 }
@@ -262,7 +252,7 @@ static double cc_partner(const prox_fcircle *a, const prox_fcircle *b, double th
     double rho = prox_hypot2(du, dv);
     *rho_out = rho;
     double cu = rho > 0.0 ? du / rho : 1.0, cv = rho > 0.0 ? dv / rho : 0.0;
-    *thb = cc_wrap(atan2(cv, cu));
+    *thb = prox_prim_wrap_2pi(atan2(cv, cu));
     *q = prox_v3_add(b->c, prox_v3_add(prox_v3_scale(b->u, b->r * cu), prox_v3_scale(b->v, b->r * cv)));
     return prox_hypot2(rho - b->r, dh);
 }

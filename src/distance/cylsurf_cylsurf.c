@@ -13,36 +13,24 @@
  * Parameters: s[0] = axial parameter of the foot (length units), s[1] = angle of the surface point in
  * the frame prox_fcircle_make(base, dir, r). Input: radii > 0, dirs finite non-zero (normalised); heights
  * are ignored. */
-#include "distance/stationary.h"
+#include "distance/prim_common.h"
 
 #define PAR_TOL 1e-12
-
-/* Validates one surface and returns its unit axis. */
-static prox_status check_surf(const prox_cylsurf *s, prox_vec3 *w)
-{
-    if (!s) return PROX_EINVAL_ARG;
-    if (!prox_v3_isfinite(s->base) || !prox_v3_isfinite(s->dir) || !isfinite(s->radius)) return PROX_EINVAL_NONFINITE;
-    if (!(s->radius > 0.0)) return PROX_EINVAL_RADIUS;
-    double n = prox_v3_norm(s->dir);
-    if (!(n > 0.0)) return PROX_EINVAL_AXIS;
-    *w = prox_v3(s->dir.x / n, s->dir.y / n, s->dir.z / n);
-    return PROX_OK;
-}
 
 /* Angle in [0, 2pi) of direction e in the frame of the circle with unit normal w. */
 static double frame_angle(prox_vec3 w, prox_vec3 e)
 {
     prox_fcircle f = prox_fcircle_make(prox_v3(0, 0, 0), w, 1.0);
-    double t = atan2(prox_v3_dot(e, f.v), prox_v3_dot(e, f.u));
-    if (t < 0.0) t += 2.0 * PROX_PI;
-    return t < 2.0 * PROX_PI ? t : 0.0;
+    return prox_prim_angle(prox_v3_dot(e, f.v), prox_v3_dot(e, f.u));
 }
 
 PROX_API prox_prim_result prox_cylsurf_cylsurf_inf(const prox_cylsurf *a, const prox_cylsurf *b)
 {
     prox_prim_result res = {0};
     prox_vec3 d1, d2;
-    if ((res.status = check_surf(a, &d1)) != PROX_OK || (res.status = check_surf(b, &d2)) != PROX_OK) return res;
+    if ((res.status = prox_prim_cylsurf_check(a, 0, &d1)) != PROX_OK ||
+        (res.status = prox_prim_cylsurf_check(b, 0, &d2)) != PROX_OK)
+        return res;
     prox_vec3 D = prox_v3_sub(b->base, a->base);
     if (!prox_v3_isfinite(D)) {
         res.status = PROX_EINVAL_NONFINITE;

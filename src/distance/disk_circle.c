@@ -15,30 +15,9 @@
  * otherwise the minimum is rim against circle.
  * Parameters: s1 = (angle, radial distance in length units) on the disk, s2[0] = angle on the circle.
  * Input: radii > 0, normals finite non-zero (normalised). */
-#include "distance/stationary.h"
+#include "distance/prim_common.h"
 
 #define PAR_TOL 1e-12
-
-/* Validates a circle or disk and returns its frame with a unit normal. */
-static prox_status check_circ(const prox_circle *c, prox_fcircle *f)
-{
-    if (!c) return PROX_EINVAL_ARG;
-    if (!prox_v3_isfinite(c->center) || !prox_v3_isfinite(c->normal) || !isfinite(c->radius))
-        return PROX_EINVAL_NONFINITE;
-    if (!(c->radius > 0.0)) return PROX_EINVAL_RADIUS;
-    double n = prox_v3_norm(c->normal);
-    if (!(n > 0.0)) return PROX_EINVAL_AXIS;
-    *f = prox_fcircle_make(c->center, prox_v3(c->normal.x / n, c->normal.y / n, c->normal.z / n), c->radius);
-    return PROX_OK;
-}
-
-/* Angle in [0, 2pi). */
-static double wrap_2pi(double t)
-{
-    t = fmod(t, 2.0 * PROX_PI);
-    if (t < 0.0) t += 2.0 * PROX_PI;
-    return t < 2.0 * PROX_PI ? t : 0.0;
-}
 
 /* Candidate: circle point at th2 against the disk interior. Accepted when its projection lies in the
  * disk; distance |h| (0 when force_zero: a crossing point). */
@@ -54,9 +33,9 @@ static void consider_foot(prox_prim_result *best, const prox_fcircle *d, const p
     best->distance = dist;
     best->p1 = prox_v3_mad(x, -h, d->n);
     best->p2 = x;
-    best->s1[0] = rho > 0.0 ? wrap_2pi(atan2(dv, du)) : 0.0;
+    best->s1[0] = rho > 0.0 ? prox_prim_angle(dv, du) : 0.0;
     best->s1[1] = rho;
-    best->s2[0] = wrap_2pi(th2);
+    best->s2[0] = prox_prim_wrap_2pi(th2);
     best->set = 0;
 }
 
@@ -99,7 +78,9 @@ PROX_API prox_prim_result prox_disk_circle(const prox_disk *d, const prox_circle
 {
     prox_prim_result best = {0};
     prox_fcircle fd, fc;
-    if ((best.status = check_circ(d, &fd)) != PROX_OK || (best.status = check_circ(c, &fc)) != PROX_OK) return best;
+    if ((best.status = prox_prim_circle_frame(d, &fd)) != PROX_OK ||
+        (best.status = prox_prim_circle_frame(c, &fc)) != PROX_OK)
+        return best;
     best.distance = INFINITY;
     double a = prox_v3_dot(fc.u, fd.n), b = prox_v3_dot(fc.v, fd.n), ab = hypot(a, b);
     double h0 = prox_v3_dot(prox_v3_sub(fc.c, fd.c), fd.n);

@@ -12,7 +12,7 @@
  * Parameters: s1[0] = t on the segment; s2[0] = axial parameter z (length units), s2[1] = angle in the
  * frame of prox_fcircle_make(base, w, r). Input: radius > 0, dir finite non-zero (normalised); height is
  * ignored (not validated). */
-#include "distance/stationary.h"
+#include "distance/prim_common.h"
 
 #define PAR_TOL 1e-12
 
@@ -20,22 +20,9 @@
 static prox_status check_input(const prox_segment *a, const prox_cylsurf *s, prox_vec3 *w)
 {
     if (!a || !s) return PROX_EINVAL_ARG;
-    if (!prox_v3_isfinite(a->a) || !prox_v3_isfinite(a->b) || !prox_v3_isfinite(prox_v3_sub(a->b, a->a)) ||
-        !prox_v3_isfinite(s->base) || !prox_v3_isfinite(s->dir) || !isfinite(s->radius))
-        return PROX_EINVAL_NONFINITE;
-    if (!(s->radius > 0.0)) return PROX_EINVAL_RADIUS;
-    double n = prox_v3_norm(s->dir);
-    if (!(n > 0.0)) return PROX_EINVAL_AXIS;
-    *w = prox_v3(s->dir.x / n, s->dir.y / n, s->dir.z / n);
-    return PROX_OK;
-}
-
-/* Angle of (x, y) in [0, 2pi). */
-static double angle_0_2pi(double y, double x)
-{
-    double t = atan2(y, x);
-    if (t < 0.0) t += 2.0 * PROX_PI;
-    return t < 2.0 * PROX_PI ? t : 0.0;
+    prox_status st = prox_prim_segment_check(a);
+    if (st != PROX_OK) return st;
+    return prox_prim_cylsurf_check(s, 0, w);
 }
 
 /* First t in [0, 1] where rho(t) = r, given the foot t0 with rho(t0) = rho0 < r, g = g0 + t0 g1. */
@@ -67,7 +54,7 @@ static void surface_point(const prox_fcircle *f, prox_vec3 x, prox_prim_result *
     }
     res->p2 = prox_v3_add(prox_v3_mad(f->c, z, f->n), prox_v3_add(prox_v3_scale(f->u, f->r * cu), prox_v3_scale(f->v, f->r * cv)));
     res->s2[0] = z;
-    res->s2[1] = *on_axis ? 0.0 : angle_0_2pi(dv, du);
+    res->s2[1] = *on_axis ? 0.0 : prox_prim_angle(dv, du);
 }
 
 PROX_API prox_prim_result prox_segment_cylsurf_inf(const prox_segment *a, const prox_cylsurf *s)
@@ -79,8 +66,7 @@ PROX_API prox_prim_result prox_segment_cylsurf_inf(const prox_segment *a, const 
     prox_vec3 d = prox_v3_sub(a->b, a->a);
     prox_vec3 g0 = prox_v3_reject(prox_v3_sub(a->a, f.c), w), g1 = prox_v3_reject(d, w);
     double A = prox_v3_norm2(g1);
-    double t0 = A > 0.0 ? -prox_v3_dot(g0, g1) / A : 0.0; /* foot on the axis, clamped */
-    t0 = t0 > 0.0 ? (t0 < 1.0 ? t0 : 1.0) : 0.0;
+    double t0 = prox_prim_clamp01(A > 0.0 ? -prox_v3_dot(g0, g1) / A : 0.0); /* foot on the axis */
     prox_vec3 g = prox_v3_mad(g0, t0, g1);
     double rho0 = prox_v3_norm(g), rhoa = prox_v3_norm(g0), rhob = prox_v3_norm(prox_v3_add(g0, g1));
     double t, dist;
@@ -94,7 +80,7 @@ PROX_API prox_prim_result prox_segment_cylsurf_inf(const prox_segment *a, const 
         t = crossing_param(g, g1, t0, rho0, f.r);
         dist = 0.0;
     }
-    res.p1 = t == 0.0 ? a->a : (t == 1.0 ? a->b : prox_v3_mad(a->a, t, d));
+    res.p1 = prox_prim_segment_point(a, t);
     res.s1[0] = t;
     int on_axis;
     surface_point(&f, res.p1, &res, &on_axis);

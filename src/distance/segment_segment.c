@@ -12,32 +12,15 @@
  * - zero-length segments have d = 0, hence n = 0: only endpoint candidates remain.
  * set = 1 when the segments are parallel (|n| <= PAR_TOL |d1||d2|), both have positive length and their
  * projections on the common direction overlap in an interval of positive length. */
-#include "prox/primitives.h"
+#include "distance/prim_common.h"
 
 /* Sine of the angle below which two segments count as parallel. */
 #define PAR_TOL 1e-12
 
-/* Checks one segment; the difference b - a must be finite too. */
-static prox_status check_segment(const prox_segment *s)
-{
-    if (!s) return PROX_EINVAL_ARG;
-    if (!prox_v3_isfinite(s->a) || !prox_v3_isfinite(s->b) || !prox_v3_isfinite(prox_v3_sub(s->b, s->a)))
-        return PROX_EINVAL_NONFINITE;
-    return PROX_OK;
-}
-
-/* Point at parameter t, endpoints exact. */
-static prox_vec3 seg_point(const prox_segment *s, double t)
-{
-    if (t == 0.0) return s->a;
-    if (t == 1.0) return s->b;
-    return prox_v3_mad(s->a, t, prox_v3_sub(s->b, s->a));
-}
-
 /* Replaces the best pair when (t1, t2) is closer. */
 static void consider(prox_prim_result *best, const prox_segment *s1, double t1, const prox_segment *s2, double t2)
 {
-    prox_vec3 p = seg_point(s1, t1), q = seg_point(s2, t2);
+    prox_vec3 p = prox_prim_segment_point(s1, t1), q = prox_prim_segment_point(s2, t2);
     double d = prox_v3_dist(p, q);
     if (d < best->distance) {
         best->distance = d;
@@ -77,7 +60,8 @@ static int parallel_overlap(const prox_segment *s1, const prox_segment *s2)
 PROX_API prox_prim_result prox_segment_segment(const prox_segment *a, const prox_segment *b)
 {
     prox_prim_result best = {0};
-    if ((best.status = check_segment(a)) != PROX_OK || (best.status = check_segment(b)) != PROX_OK) return best;
+    if ((best.status = prox_prim_segment_check(a)) != PROX_OK || (best.status = prox_prim_segment_check(b)) != PROX_OK)
+        return best;
     best.distance = INFINITY;
     interior_candidate(&best, a, b);
     /* Boundary of the parameter square: each endpoint against the other segment. */
