@@ -3,7 +3,9 @@
  * Disjoint pairs: the closed-form distance of Agarwal et al. (prox_rcc_distance, certified by
  * duality) is the exact answer: sd = distance, p1, p2 its proximal points, normal (p2 - p1) / sd.
  * Overlapping pairs: penetration depth = min over unit D of h_A(D) + h_B(-D) (h from Eberly's
- * Eq. (4)), minimised by the support-function engine (sup_engine.c), sd = -depth.
+ * Eq. (4)), minimised by enumerating the stationary directions of each stratum (rcc_depth.c), or
+ * by the global search of the support-function engine (sup_engine.c) when a stratum cannot be
+ * settled; sd = -depth.
  * sup_rcc_signed_support is the support-function method alone for both signs (SAT direction as a
  * start): the independent second method of the cross-check. */
 #include "prox/sat.h"
@@ -48,5 +50,7 @@ PROX_API prox_signed_result prox_rcc_signed_distance(const prox_rcc *a, const pr
     }
     prox_shape sa = prox_shape_from_rcc(*a), sb = prox_shape_from_rcc(*b);
     sup_body ba = sup_body_make(&sa), bb = sup_body_make(&sb);
+    /* overlapping: enumeration of the strata (rcc_depth.c); the global search when it cannot settle */
+    if (sup_rcc_depth_enum(&ba, &bb, &r)) return r;
     return sup_signed_distance(&ba, &bb, NULL);
 }

@@ -465,7 +465,7 @@ static prox_vec3 face_proj(const sup_face *f, prox_vec3 x)
 
 /* Witness points for the minimising direction n: p1 in the support set of A in n, p2 in that of B
  * in -n, with p2 - p1 as close to sd n as the sets allow (alternating projections). */
-static void witnesses(const sup_body *a, const sup_body *b, prox_vec3 n, double sd, prox_vec3 *p1, prox_vec3 *p2)
+void sup_witnesses(const sup_body *a, const sup_body *b, prox_vec3 n, double sd, prox_vec3 *p1, prox_vec3 *p2)
 {
     sup_face fa = face_of(a, n), fb = face_of(b, prox_v3_neg(n));
     if (fa.dim == 1 && fb.dim == 1) {
@@ -525,7 +525,7 @@ static prox_signed_result finish(sup_search *s)
     res.status = PROX_OK;
     res.sd = -s->best_phi;
     res.normal = s->best_d;
-    witnesses(s->a, s->b, s->best_d, res.sd, &res.p1, &res.p2);
+    sup_witnesses(s->a, s->b, s->best_d, res.sd, &res.p1, &res.p2);
     return res;
 }
 

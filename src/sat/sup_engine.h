@@ -30,6 +30,16 @@ double sup_hc(const sup_body *b, prox_vec3 d);
 /* Centred support point: a point x of (body - c) with d.x = hc(d); sign(0) picks the face centre. */
 prox_vec3 sup_pc(const sup_body *b, prox_vec3 d);
 
+/* Witness points for the minimising unit direction n and signed distance sd: p1 in the support set
+ * of a in n, p2 in that of b in -n, with p2 - p1 as close to sd n as the sets allow. */
+void sup_witnesses(const sup_body *a, const sup_body *b, prox_vec3 n, double sd, prox_vec3 *p1, prox_vec3 *p2);
+
+/* Penetration depth of two overlapping cylinders (both SUP_CYL) by enumerating the stationary
+ * directions of each stratum (docs/algorithms/sat.md, "fast depth"); 1 and *res filled when every
+ * stratum was either solved exactly or excluded by a lower bound, 0 when the caller must fall back
+ * to the global search. *res always holds the best direction found (a valid upper bound). */
+int sup_rcc_depth_enum(const sup_body *a, const sup_body *b, prox_signed_result *res);
+
 /* Signed distance of two bodies (see the file comment); status is always PROX_OK. hint (may be
  * NULL): a direction to try first, e.g. a separating direction from the SAT. */
 prox_signed_result sup_signed_distance(const sup_body *a, const sup_body *b, const prox_vec3 *hint);

@@ -1,0 +1,162 @@
+/* Penetration depth of two overlapping solid cylinders by enumeration of the strata of the depth
+ * function (issue 4, Sec. 2; derivation in docs/algorithms/sat.md, "Fast depth by strata").
+ *
+ * phi(D) = rA|P_A D| + hA|D.WA| + rB|P_B D| + hB|D.WB| - D.Delta (Eberly, "Intersection of
+ * Cylinders", Eqs. (4) and (6), with the sign of D.Delta kept), depth = min_{|D|=1} phi(D).
+ * A minimiser D* with witnesses p1 (support of A in D*), p2 (support of B in -D*) has
+ * p2 - p1 = -depth D*, and lies on one stratum:
+ *   points:  D = +-WA, +-WB (an end disk), +-(WA x WB) (two lateral lines);
+ *   ridge D.WA = 0 (A's lateral line against a rim point q of B): q - cA projected off WA is
+ *            parallel to D, i.e. q is a stationary point of dist^2(rim of B, axis line of A)
+ *            (Agarwal et al. Sec. 3.3 quartic, prox_circle_line_stationary); same with A and B swapped;
+ *   cell (rim point against rim point): (p1, p2) is a critical pair of |p1 - p2|^2 over the two
+ *            rim circles, and phi(D*) = |p1 - p2|. A critical pair where p2 is the closest point of
+ *            B's rim to p1 is a stationary point of dist^2(point of A's rim, B's rim) (Agarwal Sec.
+ *            3.5, prox_circle_circle_stationary); with p1 closest to p2 the same with A and B
+ *            swapped; the remaining (farthest, farthest) pairs have |p1 - p2|^2 >= |p1 - cB|^2 + rB^2.
+ * Cells are excluded by lower bounds of the circle-circle distance (centres, planes, spheres); only
+ * a cell that could beat the best value found so far is solved (degree 8). A cell or case that cannot
+ * be settled returns 0 and the caller runs the global search of sup_engine.c. */
+#include "sup_engine.h"
+
+#include "distance/stationary.h"
+
+#include <float.h>
+
+/* Best direction and value so far. */
+typedef struct dp_state {
+    const sup_body *a, *b;
+    prox_vec3 delta;
+    double best;
+    prox_vec3 best_d;
+} dp_state;
+
+static double dp_phi(const dp_state *s, prox_vec3 d)
+{
+    return sup_hc(s->a, d) + sup_hc(s->b, d) - prox_v3_dot(d, s->delta);
+}
+
+/* Evaluates +-v / |v| (v need not be unit); ignores v = 0. */
+static void dp_consider_pm(dp_state *s, prox_vec3 v)
+{
+    double n = sqrt(prox_v3_norm2(v));
+    if (!(n > 0.0)) return;
+    v = prox_v3_scale(v, 1.0 / n);
+    for (int k = 0; k < 2; ++k, v = prox_v3_neg(v)) {
+        double f = dp_phi(s, v);
+        if (f < s->best) { s->best = f; s->best_d = v; }
+    }
+}
+
+/* Rim circle of cylinder c at end e (+1 top, -1 bottom). */
+static prox_fcircle dp_rim(const sup_body *c, double e)
+{
+    return prox_fcircle_make(prox_v3_mad(c->c, e * c->hh, c->w), c->w, c->r);
+}
+
+/* Tangent (length r) of circle c at its point p. */
+static prox_vec3 dp_tangent(const prox_fcircle *c, prox_vec3 p)
+{
+    return prox_v3_cross(c->n, prox_v3_sub(p, c->c));
+}
+
+/* Ridge D.w = 0 of cylinder `lat` (its lateral line) against the rims of `rim`: every stationary
+ * point q of dist^2(rim, axis of lat) gives D = +-(q - c_lat) projected off w. 0 when degenerate. */
+static int dp_ridge(dp_state *s, const sup_body *lat, const sup_body *rim)
+{
+    for (int e = -1; e <= 1; e += 2) {
+        prox_fcircle c = dp_rim(rim, e);
+        double th[4];
+        int cnt = 0;
+        if (prox_circle_line_stationary(&c, lat->c, lat->w, th, &cnt)) { /* rim coaxial with lat */
+            dp_consider_pm(s, prox_v3_any_perp(lat->w));
+            continue;
+        }
+        for (int i = 0; i < cnt; ++i) {
+            prox_vec3 v = prox_v3_reject(prox_v3_sub(prox_fcircle_point(&c, th[i]), lat->c), lat->w);
+            v = prox_v3_reject(v, lat->w); /* second pass: v may be short */
+            if (!(prox_v3_norm2(v) > 1e-24 * lat->size * lat->size)) return 0; /* rim point on the axis */
+            dp_consider_pm(s, v);
+            dp_consider_pm(s, prox_v3_cross(lat->w, dp_tangent(&c, prox_fcircle_point(&c, th[i]))));
+        }
+    }
+    return 1;
+}
+
+/* Range [dmin, dmax] of |q - x| over the points q of circle c. */
+static void dp_circle_range(const prox_fcircle *c, prox_vec3 x, double *dmin, double *dmax)
+{
+    prox_vec3 d = prox_v3_sub(c->c, x);
+    double dd = prox_v3_norm2(d), pd = prox_v3_norm(prox_v3_reject(d, c->n));
+    *dmin = sqrt(fmax(0.0, dd + c->r * c->r - 2.0 * c->r * pd));
+    *dmax = sqrt(dd + c->r * c->r + 2.0 * c->r * pd);
+}
+
+/* Lower bound of the distance between circles a and b: centres, each plane, each sphere (every
+ * point of b lies on the sphere of radius rb around its centre). *far_lb: lower bound of |p1 - p2|
+ * over pairs where each point is the farthest of its circle from the other. */
+static double dp_circle_lb(const prox_fcircle *a, const prox_fcircle *b, double *far_lb)
+{
+    prox_vec3 d = prox_v3_sub(a->c, b->c);
+    double lb = prox_v3_norm(d) - a->r - b->r;
+    double sn = prox_v3_norm(prox_v3_cross(a->n, b->n));
+    lb = fmax(lb, fabs(prox_v3_dot(b->n, d)) - a->r * sn);
+    lb = fmax(lb, fabs(prox_v3_dot(a->n, d)) - b->r * sn);
+    double amin, amax, bmin, bmax;
+    dp_circle_range(a, b->c, &amin, &amax);
+    dp_circle_range(b, a->c, &bmin, &bmax);
+    lb = fmax(lb, fmax(amin - b->r, b->r - amax));
+    lb = fmax(lb, fmax(bmin - a->r, a->r - bmax));
+    *far_lb = fmax(lb, fmax(sqrt(amin * amin + b->r * b->r), sqrt(bmin * bmin + a->r * a->r)));
+    return fmax(lb, 0.0);
+}
+
+/* Critical pairs of one circle pair where the point of `b` is the closest of b to the point of `a`;
+ * each gives D = +-(p_a - p_b), and D = +-(t_a x t_b) (D is normal to both rims' tangents: exact
+ * also when the pair nearly touches and p_a - p_b is rounding). 0 on failure or degeneracy. */
+static int dp_cells_closest(dp_state *s, const prox_fcircle *a, const prox_fcircle *b)
+{
+    double th[8];
+    int cnt = 0;
+    int rc = prox_circle_circle_stationary(a, b, th, &cnt);
+    if (rc != 0) return 0;
+    for (int i = 0; i < cnt; ++i) {
+        int deg = 0;
+        prox_vec3 pa = prox_fcircle_point(a, th[i]), pb = prox_fcircle_closest(b, pa, &deg);
+        if (deg) return 0;
+        dp_consider_pm(s, prox_v3_sub(pa, pb));
+        dp_consider_pm(s, prox_v3_cross(dp_tangent(a, pa), dp_tangent(b, pb)));
+    }
+    return 1;
+}
+
+int sup_rcc_depth_enum(const sup_body *a, const sup_body *b, prox_signed_result *res)
+{
+    dp_state s = {.a = a, .b = b, .delta = prox_v3_sub(b->c, a->c), .best = INFINITY};
+    s.best_d = a->w;
+    double scale = fmax(prox_v3_norm(s.delta), fmax(a->size, b->size));
+    int ok = 1;
+    /* points */
+    dp_consider_pm(&s, a->w);
+    dp_consider_pm(&s, b->w);
+    dp_consider_pm(&s, prox_v3_cross(a->w, b->w));
+    /* ridges */
+    ok = dp_ridge(&s, a, b) && ok;
+    ok = dp_ridge(&s, b, a) && ok;
+    /* cells: rim of A at end ea against rim of B at end eb */
+    for (int ea = -1; ok && ea <= 1; ea += 2)
+        for (int eb = -1; ok && eb <= 1; eb += 2) {
+            prox_fcircle ca = dp_rim(a, ea), cb = dp_rim(b, eb);
+            double far_lb, lb = dp_circle_lb(&ca, &cb, &far_lb);
+            double cut = s.best + 1e-13 * scale; /* a bound within rounding of the best cannot improve it */
+            if (lb > cut) continue;
+            if (!(far_lb > cut)) { ok = 0; break; }
+            ok = dp_cells_closest(&s, &ca, &cb) && dp_cells_closest(&s, &cb, &ca);
+        }
+    res->status = PROX_OK;
+    res->sd = -s.best;
+    res->normal = s.best_d;
+    if (!ok || !(s.best > 0.0)) return 0; /* touching band or an unsettled stratum: global search */
+    sup_witnesses(a, b, s.best_d, res->sd, &res->p1, &res->p2);
+    return 1;
+}
