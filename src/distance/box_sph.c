@@ -2,7 +2,8 @@
  * Replaces the TRX report's Sec. 3.3 (LA-UR-13-26757, Eqs. (49)-(51): edge lines against the sphere),
  * which misses a sphere inside the box, a sphere through a face, and a box inside the sphere. Here the
  * closest point of the box to the sphere's centre decides: dist = |c - q| - R, exactly; inside the box
- * the signed distance of the centre is -(distance to the nearest face). */
+ * the signed distance of the centre is -(distance to the nearest face). Tangency within
+ * PROX_QUERY_REL_TOL x scale counts as intersecting, as in the box-box and box-cylinder verdicts. */
 #include "distance/box_internal.h"
 
 PROX_API prox_signed_result prox_box_sph_signed_distance(const prox_box *a, const prox_sph *b)
@@ -31,7 +32,8 @@ PROX_API prox_distance_result prox_box_sph_distance(const prox_box *a, const pro
     prox_bframe f = prox_bframe_make(a);
     double d;
     prox_vec3 q = prox_bframe_closest(&f, b->center, &d);
-    if (d <= b->radius) { /* q is in the box and within R of the centre: a common point */
+    double scale = fmax(fmax(prox_v3_dist(f.m, b->center), prox_bframe_size(&f)), 2.0 * b->radius);
+    if (d - b->radius <= PROX_QUERY_REL_TOL * scale) { /* q in the box, within R (+ tol) of the centre */
         r.intersect = 1;
         r.p1 = r.p2 = q;
         return r;

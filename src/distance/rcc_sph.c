@@ -14,7 +14,13 @@ double prox_rcc_point_signed(const prox_rcc *c, prox_vec3 x, prox_vec3 *q, prox_
     double t = prox_v3_dot(d, w);
     prox_vec3 rad = prox_v3_mad(d, -t, w);
     double rho = prox_v3_norm(rad);
-    prox_vec3 e = rho > 0.0 ? prox_v3_divs(rad, rho) : prox_v3_any_perp(w);
+    /* Radial unit direction. Near the axis rad is rounding noise with a component along w: below
+     * 1e-12 x size any perpendicular direction is as good; above it, re-orthogonalise to w. */
+    prox_vec3 e;
+    if (rho > 1e-12 * fmax(fmax(fabs(t), rho), c->radius))
+        e = prox_v3_normalize(prox_v3_reject(prox_v3_divs(rad, rho), w));
+    else
+        e = prox_v3_any_perp(w);
     if (t >= 0.0 && t <= h && rho <= c->radius) { /* inside: nearest of the base, top and side */
         double db = t, dt = h - t, ds = c->radius - rho;
         if (ds <= db && ds <= dt) {
@@ -58,7 +64,10 @@ PROX_API prox_distance_result prox_rcc_sph_distance(const prox_rcc *a, const pro
     if (r.status != PROX_OK) return r;
     prox_vec3 q, n;
     double sdp = prox_rcc_point_signed(a, b->center, &q, &n);
-    if (sdp <= b->radius) {
+    double h = prox_v3_norm(a->axis);
+    prox_vec3 ca = prox_v3_mad(a->base, 0.5, a->axis);
+    double scale = fmax(fmax(prox_v3_dist(ca, b->center), fmax(h, 2.0 * a->radius)), 2.0 * b->radius);
+    if (sdp - b->radius <= PROX_QUERY_REL_TOL * scale) { /* tangency within tol counts as touching */
         r.intersect = 1;
         r.p1 = r.p2 = sdp <= 0.0 ? b->center : q;
         return r;

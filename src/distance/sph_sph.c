@@ -31,7 +31,9 @@ PROX_API prox_distance_result prox_sph_sph_distance(const prox_sph *a, const pro
     prox_signed_result s = prox_sph_sph_signed_distance(a, b);
     r.status = s.status;
     if (r.status != PROX_OK) return r;
-    if (s.sd > 0.0) {
+    double d = prox_v3_dist(a->center, b->center);
+    double scale = fmax(d, 2.0 * fmax(a->radius, b->radius));
+    if (s.sd > PROX_QUERY_REL_TOL * scale) { /* tangency within tol counts as touching */
         r.distance = s.sd;
         r.p1 = s.p1;
         r.p2 = s.p2;
@@ -39,7 +41,6 @@ PROX_API prox_distance_result prox_sph_sph_distance(const prox_sph *a, const pro
         return r;
     }
     /* Overlap: the point of the segment of centres at the same depth in both spheres is common. */
-    double d = prox_v3_dist(a->center, b->center);
     double t = d > 0.0 ? a->radius / (a->radius + b->radius) : 0.0;
     r.intersect = 1;
     r.p1 = r.p2 = prox_v3_mad(a->center, t * d, s.normal);
