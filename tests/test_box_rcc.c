@@ -98,11 +98,62 @@ static void test_edge_to_side(void **st)
     assert_true(prox_box_rcc_test(&b, &c).intersect);
 }
 
+/* The closed-form edge paths of box_rcc.c: an edge parallel to the axis beside the side (a set of
+ * closest pairs, foot in range or straddling an end plane), wholly above the top (rim nearest), and an
+ * edge passing over the top disk (cap interior nearest). Each also rotated and moved as a whole. */
+static void test_edge_paths(void **st)
+{
+    (void)st;
+    test_rng g = test_rng_seed(41);
+    double s = sqrt(0.5);
+    struct {
+        double z0, z1, ex, dist;
+    } vert[] = {{0.5, 1.5, 1.5, 0.5}, {1.0, 3.0, 1.5, 0.5}, {-1.0, 3.0, 1.5, 0.5}, {2.5, 4.0, 1.5, sqrt(0.5)}};
+    for (int rot = 0; rot < 2; ++rot) {
+        test_rot R = test_random_rot(&g);
+        prox_vec3 off = rot ? prox_v3(-3, 7, 2) : prox_v3(0, 0, 0);
+        if (!rot) R = (test_rot){{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+        prox_rcc c = {off, test_rot_apply(&R, prox_v3(0, 0, 2)), 1};
+        for (size_t i = 0; i < sizeof vert / sizeof vert[0]; ++i) {
+            prox_box b; /* rotated 45 deg about z: its vertical edge at (ex, 0) faces the axis */
+            b.edge[0] = test_rot_apply(&R, prox_v3(s, s, 0));
+            b.edge[1] = test_rot_apply(&R, prox_v3(s, -s, 0));
+            b.edge[2] = test_rot_apply(&R, prox_v3(0, 0, vert[i].z1 - vert[i].z0));
+            b.corner = prox_v3_add(off, test_rot_apply(&R, prox_v3(vert[i].ex, 0, vert[i].z0)));
+            prox_distance_result d = prox_box_rcc_distance(&b, &c);
+            assert_int_equal(d.status, PROX_OK);
+            assert_false(d.intersect);
+            assert_near(d.distance, vert[i].dist, 1e-14);
+            assert_near(d.certificate_gap, d.distance, 1e-14);
+            assert_near(prox_v3_dist(d.p1, d.p2), d.distance, 1e-14);
+        }
+        /* an edge along x at height 2.3 over the top disk, the box above it: cap interior, 0.3 */
+        prox_box b;
+        b.edge[0] = test_rot_apply(&R, prox_v3(4, 0, 0));
+        b.edge[1] = test_rot_apply(&R, prox_v3(0, s, s));
+        b.edge[2] = test_rot_apply(&R, prox_v3(0, -s, s));
+        b.corner = prox_v3_add(off, test_rot_apply(&R, prox_v3(-2, 0.2, 2.3)));
+        prox_distance_result d = prox_box_rcc_distance(&b, &c);
+        assert_false(d.intersect);
+        assert_near(d.distance, 0.3, 1e-14);
+        assert_near(d.certificate_gap, 0.3, 1e-14);
+        /* the closest pairs form a segment (edge parallel to the disk): p2 on it, p1 above p2 */
+        prox_vec3 q = prox_v3_sub(d.p2, off), l;
+        l.x = R.m[0][0] * q.x + R.m[1][0] * q.y + R.m[2][0] * q.z; /* R^T q: local coordinates */
+        l.y = R.m[0][1] * q.x + R.m[1][1] * q.y + R.m[2][1] * q.z;
+        l.z = R.m[0][2] * q.x + R.m[1][2] * q.y + R.m[2][2] * q.z;
+        assert_near(l.y, 0.2, 1e-14);
+        assert_near(l.z, 2.0, 1e-14);
+        assert_true(fabs(l.x) <= sqrt(0.96) + 1e-14);
+    }
+}
+
 int main(void)
 {
     test_init();
     const struct CMUnitTest tests[] = {cmocka_unit_test(test_slab_through_side), cmocka_unit_test(test_nested),
                                        cmocka_unit_test(test_rim_to_face), cmocka_unit_test(test_corner_to_rim),
-                                       cmocka_unit_test(test_edge_to_side)};
+                                       cmocka_unit_test(test_edge_to_side),
+                                       cmocka_unit_test(test_edge_paths)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
