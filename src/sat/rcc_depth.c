@@ -60,12 +60,26 @@ static prox_vec3 dp_tangent(const prox_fcircle *c, prox_vec3 p)
     return prox_v3_cross(c->n, prox_v3_sub(p, c->c));
 }
 
+/* Lower bound of phi at a minimiser on the ridge of `lat` whose other support point q lies on rim
+ * circle c: phi = |p2 - p1| with p1 = q's partner on lat's support segment (radius r from the axis,
+ * |axial offset| <= hh). The rim projects off the axis onto an ellipse centred at the projected
+ * centre with semi-axes <= r_c, and along the axis onto an interval of half length r_c |w x n_c|. */
+static double dp_ridge_lb(const prox_fcircle *c, const sup_body *lat)
+{
+    prox_vec3 d = prox_v3_sub(c->c, lat->c);
+    double ax = prox_v3_dot(d, lat->w), rho = prox_v3_norm(prox_v3_reject(d, lat->w));
+    double lb = fmax(rho - c->r - lat->r, lat->r - rho - c->r);
+    lb = fmax(lb, fabs(ax) - c->r * prox_v3_norm(prox_v3_cross(lat->w, c->n)) - lat->hh);
+    return fmax(lb, 0.0);
+}
+
 /* Ridge D.w = 0 of cylinder `lat` (its lateral line) against the rims of `rim`: every stationary
  * point q of dist^2(rim, axis of lat) gives D = +-(q - c_lat) projected off w. 0 when degenerate. */
-static int dp_ridge(dp_state *s, const sup_body *lat, const sup_body *rim)
+static int dp_ridge(dp_state *s, const sup_body *lat, const sup_body *rim, double tol)
 {
     for (int e = -1; e <= 1; e += 2) {
         prox_fcircle c = dp_rim(rim, e);
+        if (dp_ridge_lb(&c, lat) > s->best + tol) continue;
         double th[4];
         int cnt = 0;
         if (prox_circle_line_stationary(&c, lat->c, lat->w, th, &cnt)) { /* rim coaxial with lat */
@@ -93,9 +107,10 @@ static void dp_circle_range(const prox_fcircle *c, prox_vec3 x, double *dmin, do
 }
 
 /* Lower bound of the distance between circles a and b: centres, each plane, each sphere (every
- * point of b lies on the sphere of radius rb around its centre). *far_lb: lower bound of |p1 - p2|
- * over pairs where each point is the farthest of its circle from the other. */
-static double dp_circle_lb(const prox_fcircle *a, const prox_fcircle *b, double *far_lb)
+ * point of b lies on the sphere of radius rb around its centre). *far_a (*far_b): lower bound of
+ * |p1 - p2| over pairs where p1 is the farthest point of a from p2 (p2 the farthest of b from p1):
+ * the farthest point q of a circle (centre c, radius r) from x has |x - q|^2 >= |x - c|^2 + r^2. */
+static double dp_circle_lb(const prox_fcircle *a, const prox_fcircle *b, double *far_a, double *far_b)
 {
     prox_vec3 d = prox_v3_sub(a->c, b->c);
     double lb = prox_v3_norm(d) - a->r - b->r;
@@ -107,7 +122,8 @@ static double dp_circle_lb(const prox_fcircle *a, const prox_fcircle *b, double 
     dp_circle_range(b, a->c, &bmin, &bmax);
     lb = fmax(lb, fmax(amin - b->r, b->r - amax));
     lb = fmax(lb, fmax(bmin - a->r, a->r - bmax));
-    *far_lb = fmax(lb, fmax(sqrt(amin * amin + b->r * b->r), sqrt(bmin * bmin + a->r * a->r)));
+    *far_a = fmax(lb, sqrt(bmin * bmin + a->r * a->r));
+    *far_b = fmax(lb, sqrt(amin * amin + b->r * b->r));
     return fmax(lb, 0.0);
 }
 
@@ -141,17 +157,21 @@ int sup_rcc_depth_enum(const sup_body *a, const sup_body *b, prox_signed_result 
     dp_consider_pm(&s, b->w);
     dp_consider_pm(&s, prox_v3_cross(a->w, b->w));
     /* ridges */
-    ok = dp_ridge(&s, a, b) && ok;
-    ok = dp_ridge(&s, b, a) && ok;
+    ok = dp_ridge(&s, a, b, 1e-13 * scale) && ok;
+    ok = dp_ridge(&s, b, a, 1e-13 * scale) && ok;
     /* cells: rim of A at end ea against rim of B at end eb */
     for (int ea = -1; ok && ea <= 1; ea += 2)
         for (int eb = -1; ok && eb <= 1; eb += 2) {
             prox_fcircle ca = dp_rim(a, ea), cb = dp_rim(b, eb);
-            double far_lb, lb = dp_circle_lb(&ca, &cb, &far_lb);
+            double far_a, far_b, lb = dp_circle_lb(&ca, &cb, &far_a, &far_b);
             double cut = s.best + 1e-13 * scale; /* a bound within rounding of the best cannot improve it */
             if (lb > cut) continue;
-            if (!(far_lb > cut)) { ok = 0; break; }
-            ok = dp_cells_closest(&s, &ca, &cb) && dp_cells_closest(&s, &cb, &ca);
+            /* pairs with p2 closest on B's rim to p1: stationary points on A's rim (one degree-8
+             * solve); with p1 closest on A's rim: on B's rim. The rest has p1 farthest (>= far_a)
+             * or p2 farthest (>= far_b): one solve suffices when either bound exceeds the best. */
+            if (far_a > cut) ok = dp_cells_closest(&s, &cb, &ca);
+            else if (far_b > cut) ok = dp_cells_closest(&s, &ca, &cb);
+            else ok = 0;
         }
     res->status = PROX_OK;
     res->sd = -s.best;
