@@ -1,19 +1,7 @@
 /* segment_cylsurf.c and cylsurf_cylsurf.c against independent long-double computations:
  * segment vs infinite surface by dense sampling of |rho(t) - r| plus golden-section refinement;
  * P(S,S) by the normal equations of the two axes solved in long double; hand-made special cases. */
-#include "test_util.h"
-
-typedef long double ld;
-typedef struct lv3 {
-    ld x, y, z;
-} lv3;
-static lv3 L(prox_vec3 v) { lv3 r = {v.x, v.y, v.z}; return r; }
-static lv3 ladd(lv3 a, lv3 b) { lv3 r = {a.x + b.x, a.y + b.y, a.z + b.z}; return r; }
-static lv3 lsub(lv3 a, lv3 b) { lv3 r = {a.x - b.x, a.y - b.y, a.z - b.z}; return r; }
-static lv3 lsc(lv3 a, ld s) { lv3 r = {a.x * s, a.y * s, a.z * s}; return r; }
-static ld ldot(lv3 a, lv3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static ld lnorm(lv3 a) { return sqrtl(ldot(a, a)); }
-static lv3 lunit(lv3 a) { return lsc(a, 1.0L / lnorm(a)); }
+#include "test_brute.h"
 
 /* Distance of x from the axis (base o, unit w). */
 static ld lrho(lv3 x, lv3 o, lv3 w)
@@ -26,44 +14,25 @@ typedef struct segsurf {
     lv3 a, d, o, w;
     ld r;
 } segsurf;
-static ld ss_eval(const segsurf *S, ld t) { return fabsl(lrho(ladd(S->a, lsc(S->d, t)), S->o, S->w) - S->r); }
-static ld ss_golden(const segsurf *S, ld lo, ld hi)
+/* Distance |rho(t) - r| of the segment point at t from the surface (not convex: every sampled local
+ * minimum is refined). */
+static ld ss_eval(const void *ctx, ld t)
 {
-    const ld g = 0.6180339887498948482L;
-    ld c = hi - g * (hi - lo), d = lo + g * (hi - lo), fc = ss_eval(S, c), fd = ss_eval(S, d);
-    for (int it = 0; it < 90; ++it) {
-        if (fc < fd) { hi = d; d = c; fd = fc; c = hi - g * (hi - lo); fc = ss_eval(S, c); }
-        else { lo = c; c = d; fc = fd; d = lo + g * (hi - lo); fd = ss_eval(S, d); }
-    }
-    return fc < fd ? fc : fd;
+    const segsurf *S = ctx;
+    return fabsl(lrho(ladd(S->a, lsc(S->d, t)), S->o, S->w) - S->r);
 }
-static ld ss_brute(const segsurf *S)
-{
-    enum { N = 200 };
-    ld v[N + 1], best = 1e300L;
-    for (int i = 0; i <= N; ++i) v[i] = ss_eval(S, (ld)i / N);
-    for (int i = 0; i <= N; ++i) {
-        if (v[i] < best) best = v[i];
-        if ((i == 0 || v[i] <= v[i - 1]) && (i == N || v[i] <= v[i + 1])) {
-            ld m = ss_golden(S, (ld)(i > 0 ? i - 1 : 0) / N, (ld)(i < N ? i + 1 : N) / N);
-            if (m < best) best = m;
-        }
-    }
-    return best;
-}
+static ld ss_brute(const segsurf *S) { return tb_min_unit(ss_eval, S, 200, 1); }
 
 static prox_prim_result check_seg_surf(prox_segment sg, prox_cylsurf cs)
 {
     prox_prim_result res = prox_segment_cylsurf_inf(&sg, &cs);
     assert_int_equal(res.status, PROX_OK);
-    double sc = fmax(fmax(prox_v3_maxabs(sg.a), prox_v3_maxabs(sg.b)), fmax(prox_v3_maxabs(cs.base), cs.radius));
-    sc = fmax(sc, prox_v3_dist(sg.a, sg.b));
-    double tol = 1e-12 * sc;
+    double tol = 1e-12 * tb_seg_scale(&sg, cs.base, cs.radius);
     segsurf S = {L(sg.a), lsub(L(sg.b), L(sg.a)), L(cs.base), lunit(L(cs.dir)), cs.radius};
     assert_near(res.distance, (double)ss_brute(&S), tol);
     assert_near(prox_v3_dist(res.p1, res.p2), res.distance, tol);
     assert_true(res.s1[0] >= 0 && res.s1[0] <= 1);
-    assert_near((double)lnorm(lsub(L(res.p1), ladd(S.a, lsc(S.d, res.s1[0])))), 0, tol);
+    assert_near(tb_seg_point_err(res.p1, S.a, S.d, res.s1[0]), 0, tol);
     assert_near((double)lrho(L(res.p2), S.o, S.w), cs.radius, tol);
     assert_near(res.s2[0], (double)ldot(lsub(L(res.p2), S.o), S.w), tol);
     prox_vec3 w = prox_v3_normalize(cs.dir);
@@ -72,17 +41,15 @@ static prox_prim_result check_seg_surf(prox_segment sg, prox_cylsurf cs)
     return res;
 }
 
-static prox_vec3 rp(test_rng *r, prox_vec3 o, double s) { return prox_v3_mad(o, s * test_range(r, 0, 1), test_unit(r)); }
-
 static void test_segment_cylsurf_random(void **st)
 {
     (void)st;
     test_rng r = test_rng_seed(505);
     for (int i = 0; i < 4000; ++i) {
-        double s = pow(10.0, test_range(&r, -6, 6));
-        prox_vec3 o = (i % 5 == 0) ? prox_v3_scale(test_unit(&r), 1e8) : prox_v3_scale(test_unit(&r), s * test_range(&r, 0, 3));
-        prox_cylsurf cs = {rp(&r, o, s), test_unit(&r), 0, s * test_range(&r, 0.05, 1.5)};
-        prox_segment sg = {rp(&r, o, 2 * s), rp(&r, o, 2 * s)};
+        double s = tb_random_scale(&r);
+        prox_vec3 o = tb_random_origin(&r, i, s);
+        prox_cylsurf cs = {tb_rp(&r, o, s), test_unit(&r), 0, s * test_range(&r, 0.05, 1.5)};
+        prox_segment sg = {tb_rp(&r, o, 2 * s), tb_rp(&r, o, 2 * s)};
         switch (i % 6) {
         case 1: sg.b = prox_v3_mad(sg.a, s * test_range(&r, -2, 2), cs.dir); break; /* parallel to the axis */
         case 2: sg.b = sg.a; break;                                                 /* zero length */
@@ -176,10 +143,10 @@ static void test_cylsurf_cylsurf_random(void **st)
     (void)st;
     test_rng r = test_rng_seed(606);
     for (int i = 0; i < 20000; ++i) {
-        double s = pow(10.0, test_range(&r, -6, 6));
-        prox_vec3 o = (i % 5 == 0) ? prox_v3_scale(test_unit(&r), 1e8) : prox_v3_scale(test_unit(&r), s * test_range(&r, 0, 3));
-        prox_cylsurf a = {rp(&r, o, s), test_unit(&r), 0, s * test_range(&r, 0.05, 1.5)};
-        prox_cylsurf b = {rp(&r, o, s), test_unit(&r), 0, s * test_range(&r, 0.05, 1.5)};
+        double s = tb_random_scale(&r);
+        prox_vec3 o = tb_random_origin(&r, i, s);
+        prox_cylsurf a = {tb_rp(&r, o, s), test_unit(&r), 0, s * test_range(&r, 0.05, 1.5)};
+        prox_cylsurf b = {tb_rp(&r, o, s), test_unit(&r), 0, s * test_range(&r, 0.05, 1.5)};
         int compare = prox_v3_norm(prox_v3_cross(a.dir, b.dir)) > 1e-2;
         if (i % 10 == 3) { /* near parallel: properties only */
             b.dir = prox_v3_normalize(prox_v3_mad(a.dir, pow(10.0, test_range(&r, -11, -3)), test_unit(&r)));

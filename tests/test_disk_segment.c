@@ -1,65 +1,33 @@
 /* disk_segment.c (P(D, L)) against an independent long-double brute force: the distance from a segment
  * point to the disk (closed form in long double) is convex in t, minimised by sampling + golden section;
  * hand-made parallel, piercing, in-plane, perpendicular, huge/tiny and far cases. */
-#include "test_util.h"
-
-typedef long double ld;
-typedef struct lv3 {
-    ld x, y, z;
-} lv3;
-static lv3 L(prox_vec3 v) { lv3 r = {v.x, v.y, v.z}; return r; }
-static lv3 ladd(lv3 a, lv3 b) { lv3 r = {a.x + b.x, a.y + b.y, a.z + b.z}; return r; }
-static lv3 lsub(lv3 a, lv3 b) { lv3 r = {a.x - b.x, a.y - b.y, a.z - b.z}; return r; }
-static lv3 lsc(lv3 a, ld s) { lv3 r = {a.x * s, a.y * s, a.z * s}; return r; }
-static ld ldot(lv3 a, lv3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static ld lnorm(lv3 a) { return sqrtl(ldot(a, a)); }
-static lv3 lunit(lv3 a) { return lsc(a, 1.0L / lnorm(a)); }
+#include "test_brute.h"
 
 typedef struct prob {
     lv3 c, n, a, d;
     ld r;
 } prob;
 /* Distance from x to the disk: height and radial excess. */
-static ld ldisk(const prob *P, lv3 x)
+static ld ldisk(const prob *P, lv3 x) { return tb_disk_dist(x, P->c, P->n, P->r); }
+/* Distance from the segment point at t to the disk: convex in t. */
+static ld fval(const void *ctx, ld t)
 {
-    lv3 q = lsub(x, P->c);
-    ld h = ldot(q, P->n), rho = lnorm(lsub(q, lsc(P->n, h)));
-    ld e = rho > P->r ? rho - P->r : 0;
-    return sqrtl(h * h + e * e);
+    const prob *P = ctx;
+    return ldisk(P, ladd(P->a, lsc(P->d, t)));
 }
-static ld fval(const prob *P, ld t) { return ldisk(P, ladd(P->a, lsc(P->d, t))); }
-static ld brute(const prob *P)
-{
-    enum { N = 64 };
-    ld best = 1e300L;
-    int ib = 0;
-    for (int i = 0; i <= N; ++i) {
-        ld v = fval(P, (ld)i / N);
-        if (v < best) { best = v; ib = i; }
-    }
-    const ld g = 0.6180339887498948482L;
-    ld lo = (ld)(ib > 0 ? ib - 1 : 0) / N, hi = (ld)(ib < N ? ib + 1 : N) / N;
-    ld c = hi - g * (hi - lo), d = lo + g * (hi - lo), fc = fval(P, c), fd = fval(P, d);
-    for (int it = 0; it < 90; ++it) {
-        if (fc < fd) { hi = d; d = c; fd = fc; c = hi - g * (hi - lo); fc = fval(P, c); }
-        else { lo = c; c = d; fc = fd; d = lo + g * (hi - lo); fd = fval(P, d); }
-    }
-    return fminl(best, fminl(fc, fd));
-}
+static ld brute(const prob *P) { return tb_min_unit(fval, P, 64, 0); }
 
 static prox_prim_result check(prox_disk dk, prox_segment s)
 {
     prox_prim_result res = prox_disk_segment(&dk, &s);
     assert_int_equal(res.status, PROX_OK);
-    double sc = fmax(fmax(prox_v3_maxabs(s.a), prox_v3_maxabs(s.b)), fmax(prox_v3_maxabs(dk.center), dk.radius));
-    sc = fmax(sc, prox_v3_dist(s.a, s.b));
-    double tol = 1e-12 * sc;
+    double tol = 1e-12 * tb_seg_scale(&s, dk.center, dk.radius);
     prob P = {L(dk.center), lunit(L(dk.normal)), L(s.a), lsub(L(s.b), L(s.a)), dk.radius};
     assert_near(res.distance, (double)brute(&P), tol);
     assert_near(prox_v3_dist(res.p1, res.p2), res.distance, tol);
     assert_near((double)ldisk(&P, L(res.p1)), 0, tol); /* p1 on the disk */
     assert_true(res.s2[0] >= 0 && res.s2[0] <= 1);
-    assert_near((double)lnorm(lsub(L(res.p2), ladd(P.a, lsc(P.d, res.s2[0])))), 0, tol);
+    assert_near(tb_seg_point_err(res.p2, P.a, P.d, res.s2[0]), 0, tol);
     prox_circle cu = dk;
     cu.normal = prox_v3_normalize(dk.normal);
     prox_vec3 u, v;
@@ -69,17 +37,15 @@ static prox_prim_result check(prox_disk dk, prox_segment s)
     return res;
 }
 
-static prox_vec3 rp(test_rng *r, prox_vec3 o, double s) { return prox_v3_mad(o, s * test_range(r, 0, 1), test_unit(r)); }
-
 static void test_disk_segment_random(void **st)
 {
     (void)st;
     test_rng r = test_rng_seed(909);
     for (int i = 0; i < 20000; ++i) {
-        double s = pow(10.0, test_range(&r, -6, 6));
-        prox_vec3 o = (i % 5 == 0) ? prox_v3_scale(test_unit(&r), 1e8) : prox_v3_scale(test_unit(&r), s * test_range(&r, 0, 3));
-        prox_disk dk = {rp(&r, o, s), test_unit(&r), s * test_range(&r, 0.1, 1.5)};
-        prox_segment sg = {rp(&r, o, 2 * s), rp(&r, o, 2 * s)};
+        double s = tb_random_scale(&r);
+        prox_vec3 o = tb_random_origin(&r, i, s);
+        prox_disk dk = {tb_rp(&r, o, s), test_unit(&r), s * test_range(&r, 0.1, 1.5)};
+        prox_segment sg = {tb_rp(&r, o, 2 * s), tb_rp(&r, o, 2 * s)};
         prox_vec3 u, v;
         prox_circle_frame(&dk, &u, &v);
         switch (i % 8) {

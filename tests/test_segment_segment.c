@@ -1,47 +1,23 @@
 /* segment_segment.c against an independent brute force in long double: nested minimisation
  * (golden section over t1 of the clamped-projection distance, which is convex in t1), plus hand-made
  * parallel, near-parallel, crossing, zero-length, huge/tiny and far-from-origin cases. */
-#include "test_util.h"
+#include "test_brute.h"
 
-typedef long double ld;
-typedef struct lv3 {
-    ld x, y, z;
-} lv3;
-static lv3 L(prox_vec3 v) { lv3 r = {v.x, v.y, v.z}; return r; }
-static lv3 ladd(lv3 a, lv3 b) { lv3 r = {a.x + b.x, a.y + b.y, a.z + b.z}; return r; }
-static lv3 lsub(lv3 a, lv3 b) { lv3 r = {a.x - b.x, a.y - b.y, a.z - b.z}; return r; }
-static lv3 lsc(lv3 a, ld s) { lv3 r = {a.x * s, a.y * s, a.z * s}; return r; }
-static ld ldot(lv3 a, lv3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static ld lnorm(lv3 a) { return sqrtl(ldot(a, a)); }
-
-static ld lseg_dist(lv3 x, lv3 a, lv3 d)
+/* The two segments in long double. */
+typedef struct segpair {
+    lv3 a1, d1, a2, d2;
+} segpair;
+/* dist(a1 + t1 d1, segment 2), convex in t1. */
+static ld seg_eval(const void *ctx, ld t1)
 {
-    ld dd = ldot(d, d), t = dd > 0 ? ldot(lsub(x, a), d) / dd : 0;
-    t = t < 0 ? 0 : (t > 1 ? 1 : t);
-    return lnorm(lsub(x, ladd(a, lsc(d, t))));
+    const segpair *P = ctx;
+    return lseg_dist(ladd(P->a1, lsc(P->d1, t1)), P->a2, P->d2);
 }
 /* min over t1 in [0,1] of dist(a1 + t1 d1, segment 2): dense samples then golden section. */
 static ld brute(const prox_segment *s1, const prox_segment *s2)
 {
-    lv3 a1 = L(s1->a), d1 = lsub(L(s1->b), a1), a2 = L(s2->a), d2 = lsub(L(s2->b), a2);
-    enum { N = 64 };
-    ld best = 1e300L;
-    int ib = 0;
-    for (int i = 0; i <= N; ++i) {
-        ld v = lseg_dist(ladd(a1, lsc(d1, (ld)i / N)), a2, d2);
-        if (v < best) { best = v; ib = i; }
-    }
-    const ld g = 0.6180339887498948482L;
-    ld lo = (ld)(ib > 0 ? ib - 1 : 0) / N, hi = (ld)(ib < N ? ib + 1 : N) / N;
-    ld c = hi - g * (hi - lo), d = lo + g * (hi - lo);
-    ld fc = lseg_dist(ladd(a1, lsc(d1, c)), a2, d2), fd = lseg_dist(ladd(a1, lsc(d1, d)), a2, d2);
-    for (int it = 0; it < 90; ++it) {
-        if (fc < fd) { hi = d; d = c; fd = fc; c = hi - g * (hi - lo); fc = lseg_dist(ladd(a1, lsc(d1, c)), a2, d2); }
-        else { lo = c; c = d; fc = fd; d = lo + g * (hi - lo); fd = lseg_dist(ladd(a1, lsc(d1, d)), a2, d2); }
-    }
-    if (fc < best) best = fc;
-    if (fd < best) best = fd;
-    return best;
+    segpair P = {L(s1->a), lsub(L(s1->b), L(s1->a)), L(s2->a), lsub(L(s2->b), L(s2->a))};
+    return tb_min_unit(seg_eval, &P, 64, 0);
 }
 
 static double seg_scale(const prox_segment *s1, const prox_segment *s2)
@@ -59,21 +35,19 @@ static prox_prim_result check(prox_segment s1, prox_segment s2)
     assert_near(prox_v3_dist(res.p1, res.p2), res.distance, tol);
     assert_true(res.s1[0] >= 0 && res.s1[0] <= 1 && res.s2[0] >= 0 && res.s2[0] <= 1);
     lv3 a1 = L(s1.a), d1 = lsub(L(s1.b), a1), a2 = L(s2.a), d2 = lsub(L(s2.b), a2);
-    assert_near((double)lnorm(lsub(L(res.p1), ladd(a1, lsc(d1, res.s1[0])))), 0, tol);
-    assert_near((double)lnorm(lsub(L(res.p2), ladd(a2, lsc(d2, res.s2[0])))), 0, tol);
+    assert_near(tb_seg_point_err(res.p1, a1, d1, res.s1[0]), 0, tol);
+    assert_near(tb_seg_point_err(res.p2, a2, d2, res.s2[0]), 0, tol);
     return res;
 }
-
-static prox_vec3 rp(test_rng *r, prox_vec3 o, double s) { return prox_v3_mad(o, s * test_range(r, 0, 1), test_unit(r)); }
 
 static void test_segment_segment_random(void **st)
 {
     (void)st;
     test_rng r = test_rng_seed(404);
     for (int i = 0; i < 20000; ++i) {
-        double s = pow(10.0, test_range(&r, -6, 6));
-        prox_vec3 o = (i % 5 == 0) ? prox_v3_scale(test_unit(&r), 1e8) : prox_v3_scale(test_unit(&r), s * test_range(&r, 0, 3));
-        prox_segment s1 = {rp(&r, o, s), rp(&r, o, s)}, s2 = {rp(&r, o, s), rp(&r, o, s)};
+        double s = tb_random_scale(&r);
+        prox_vec3 o = tb_random_origin(&r, i, s);
+        prox_segment s1 = {tb_rp(&r, o, s), tb_rp(&r, o, s)}, s2 = {tb_rp(&r, o, s), tb_rp(&r, o, s)};
         prox_vec3 d1 = prox_v3_sub(s1.b, s1.a);
         switch (i % 8) {
         case 1: /* exactly parallel (scaled copy of the direction) */
