@@ -2,19 +2,8 @@
  * dense sampling of the circle angle (segment parameter by clamped projection) with golden-section
  * refinement; every local extremum of the sampled line distance must be among the returned stationary
  * angles, and every returned angle must be stationary. */
-#include "test_util.h"
+#include "test_brute.h"
 #include "distance/stationary.h"
-
-typedef long double ld;
-typedef struct lv3 {
-    ld x, y, z;
-} lv3;
-static lv3 L(prox_vec3 v) { lv3 r = {v.x, v.y, v.z}; return r; }
-static lv3 ladd(lv3 a, lv3 b) { lv3 r = {a.x + b.x, a.y + b.y, a.z + b.z}; return r; }
-static lv3 lsub(lv3 a, lv3 b) { lv3 r = {a.x - b.x, a.y - b.y, a.z - b.z}; return r; }
-static lv3 lsc(lv3 a, ld s) { lv3 r = {a.x * s, a.y * s, a.z * s}; return r; }
-static ld ldot(lv3 a, lv3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static ld lnorm(lv3 a) { return sqrtl(ldot(a, a)); }
 
 /* Circle and segment in long double; the circle frame is the library's (angles are compared). */
 typedef struct prob {
@@ -23,39 +12,17 @@ typedef struct prob {
     int infinite; /* 1: distance to the infinite line (stationary test), squared */
 } prob;
 static lv3 cpt(const prob *P, ld th) { return ladd(P->c, lsc(ladd(lsc(P->u, cosl(th)), lsc(P->v, sinl(th))), P->r)); }
-static ld pval(const prob *P, ld th)
+static ld pval(const void *ctx, ld th)
 {
+    const prob *P = ctx;
     lv3 x = cpt(P, th), q = lsub(x, P->a);
     ld dd = ldot(P->d, P->d), t = dd > 0 ? ldot(q, P->d) / dd : 0;
     if (!P->infinite) t = t < 0 ? 0 : (t > 1 ? 1 : t);
     lv3 e = lsub(q, lsc(P->d, t));
     return P->infinite ? ldot(e, e) : lnorm(e);
 }
-static ld golden(const prob *P, ld lo, ld hi, ld sign, ld *arg)
-{
-    const ld g = 0.6180339887498948482L;
-    ld c = hi - g * (hi - lo), d = lo + g * (hi - lo), fc = sign * pval(P, c), fd = sign * pval(P, d);
-    for (int it = 0; it < 90; ++it) {
-        if (fc < fd) { hi = d; d = c; fd = fc; c = hi - g * (hi - lo); fc = sign * pval(P, c); }
-        else { lo = c; c = d; fc = fd; d = lo + g * (hi - lo); fd = sign * pval(P, d); }
-    }
-    *arg = fc < fd ? c : d;
-    return sign * (fc < fd ? fc : fd);
-}
 enum { NS = 512 };
-static ld brute_min(const prob *P)
-{
-    ld v[NS], best = 1e300L, step = 2 * (ld)PROX_PI / NS, arg;
-    for (int i = 0; i < NS; ++i) v[i] = pval(P, i * step);
-    for (int i = 0; i < NS; ++i) {
-        if (v[i] < best) best = v[i];
-        if (v[i] <= v[(i + NS - 1) % NS] && v[i] <= v[(i + 1) % NS]) {
-            ld m = golden(P, (i - 1) * step, (i + 1) * step, 1, &arg);
-            if (m < best) best = m;
-        }
-    }
-    return best;
-}
+static ld brute_min(const prob *P) { return tb_min_periodic(pval, P, NS); }
 
 static prob make_prob(const prox_circle *c, const prox_segment *s, int infinite)
 {
@@ -72,9 +39,7 @@ static prox_prim_result check(prox_circle c, prox_segment s)
 {
     prox_prim_result res = prox_circle_segment(&c, &s);
     assert_int_equal(res.status, PROX_OK);
-    double sc = fmax(fmax(prox_v3_maxabs(s.a), prox_v3_maxabs(s.b)), fmax(prox_v3_maxabs(c.center), c.radius));
-    sc = fmax(sc, prox_v3_dist(s.a, s.b));
-    double tol = 1e-12 * sc;
+    double tol = 1e-12 * tb_seg_scale(&s, c.center, c.radius);
     prob P = make_prob(&c, &s, 0);
     assert_near(res.distance, (double)brute_min(&P), tol);
     assert_near(prox_v3_dist(res.p1, res.p2), res.distance, tol);
@@ -82,21 +47,19 @@ static prox_prim_result check(prox_circle c, prox_segment s)
     assert_near((double)lnorm(lsub(L(res.p1), cpt(&P, res.s1[0]))), 0, 4 * tol);
     assert_true(res.s1[0] >= 0 && res.s1[0] < 2 * PROX_PI);
     assert_true(res.s2[0] >= 0 && res.s2[0] <= 1);
-    assert_near((double)lnorm(lsub(L(res.p2), ladd(P.a, lsc(P.d, res.s2[0])))), 0, tol);
+    assert_near(tb_seg_point_err(res.p2, P.a, P.d, res.s2[0]), 0, tol);
     return res;
 }
-
-static prox_vec3 rp(test_rng *r, prox_vec3 o, double s) { return prox_v3_mad(o, s * test_range(r, 0, 1), test_unit(r)); }
 
 static void test_circle_segment_random(void **st)
 {
     (void)st;
     test_rng r = test_rng_seed(707);
     for (int i = 0; i < 6000; ++i) {
-        double s = pow(10.0, test_range(&r, -6, 6));
-        prox_vec3 o = (i % 5 == 0) ? prox_v3_scale(test_unit(&r), 1e8) : prox_v3_scale(test_unit(&r), s * test_range(&r, 0, 3));
-        prox_circle c = {rp(&r, o, s), test_unit(&r), s * test_range(&r, 0.1, 1.5)};
-        prox_segment sg = {rp(&r, o, 2 * s), rp(&r, o, 2 * s)};
+        double s = tb_random_scale(&r);
+        prox_vec3 o = tb_random_origin(&r, i, s);
+        prox_circle c = {tb_rp(&r, o, s), test_unit(&r), s * test_range(&r, 0.1, 1.5)};
+        prox_segment sg = {tb_rp(&r, o, 2 * s), tb_rp(&r, o, 2 * s)};
         prox_vec3 u, v;
         prox_circle_frame(&c, &u, &v);
         switch (i % 8) {
@@ -142,7 +105,7 @@ static void check_stationary(prox_circle c, prox_vec3 p, prox_vec3 w, int *check
     for (int i = 0; i < NS && ne < 8; ++i) {
         ld a = v[(i + NS - 1) % NS], b = v[(i + 1) % NS];
         int mn = v[i] < a && v[i] <= b, mx = v[i] > a && v[i] >= b;
-        if (mn || mx) golden(&P, (i - 1) * step, (i + 1) * step, mn ? 1 : -1, &ext[ne++]);
+        if (mn || mx) tb_golden(pval, &P, (i - 1) * step, (i + 1) * step, mn ? 1 : -1, &ext[ne++]);
     }
     /* well-separated extrema only (near-double ones are ill-posed for the brute force) */
     for (int i = 0; i < ne; ++i)

@@ -1,55 +1,22 @@
 /* disk_circle.c (P(D, C)) against an independent long-double brute force: the distance from a circle
  * point to the solid disk (closed form in long double) sampled densely over the circle angle and refined
  * by golden section; hand-made parallel, concentric, coaxial, crossing, touching, scaled and far cases. */
-#include "test_util.h"
+#include "test_brute.h"
 #include "distance/stationary.h"
-
-typedef long double ld;
-typedef struct lv3 {
-    ld x, y, z;
-} lv3;
-static lv3 L(prox_vec3 v) { lv3 r = {v.x, v.y, v.z}; return r; }
-static lv3 ladd(lv3 a, lv3 b) { lv3 r = {a.x + b.x, a.y + b.y, a.z + b.z}; return r; }
-static lv3 lsub(lv3 a, lv3 b) { lv3 r = {a.x - b.x, a.y - b.y, a.z - b.z}; return r; }
-static lv3 lsc(lv3 a, ld s) { lv3 r = {a.x * s, a.y * s, a.z * s}; return r; }
-static ld ldot(lv3 a, lv3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static ld lnorm(lv3 a) { return sqrtl(ldot(a, a)); }
-static lv3 lunit(lv3 a) { return lsc(a, 1.0L / lnorm(a)); }
 
 typedef struct prob {
     lv3 c1, n1, c2, u2, v2, n2;
     ld r1, r2;
 } prob;
-static ld ldisk(const prob *P, lv3 x)
-{
-    lv3 q = lsub(x, P->c1);
-    ld h = ldot(q, P->n1), rho = lnorm(lsub(q, lsc(P->n1, h)));
-    ld e = rho > P->r1 ? rho - P->r1 : 0;
-    return sqrtl(h * h + e * e);
-}
+static ld ldisk(const prob *P, lv3 x) { return tb_disk_dist(x, P->c1, P->n1, P->r1); }
 static lv3 cpt(const prob *P, ld th) { return ladd(P->c2, lsc(ladd(lsc(P->u2, cosl(th)), lsc(P->v2, sinl(th))), P->r2)); }
-static ld fval(const prob *P, ld th) { return ldisk(P, cpt(P, th)); }
-static ld golden(const prob *P, ld lo, ld hi)
+/* Distance from the circle point at th to the disk. */
+static ld fval(const void *ctx, ld th)
 {
-    const ld g = 0.6180339887498948482L;
-    ld c = hi - g * (hi - lo), d = lo + g * (hi - lo), fc = fval(P, c), fd = fval(P, d);
-    for (int it = 0; it < 90; ++it) {
-        if (fc < fd) { hi = d; d = c; fd = fc; c = hi - g * (hi - lo); fc = fval(P, c); }
-        else { lo = c; c = d; fc = fd; d = lo + g * (hi - lo); fd = fval(P, d); }
-    }
-    return fminl(fc, fd);
+    const prob *P = ctx;
+    return ldisk(P, cpt(P, th));
 }
-static ld brute(const prob *P)
-{
-    enum { N = 512 };
-    ld v[N], best = 1e300L, step = 2 * (ld)PROX_PI / N;
-    for (int i = 0; i < N; ++i) v[i] = fval(P, i * step);
-    for (int i = 0; i < N; ++i) {
-        if (v[i] < best) best = v[i];
-        if (v[i] <= v[(i + N - 1) % N] && v[i] <= v[(i + 1) % N]) best = fminl(best, golden(P, (i - 1) * step, (i + 1) * step));
-    }
-    return best;
-}
+static ld brute(const prob *P) { return tb_min_periodic(fval, P, 512); }
 
 static prox_prim_result check(prox_disk dk, prox_circle c)
 {
@@ -69,17 +36,15 @@ static prox_prim_result check(prox_disk dk, prox_circle c)
     return res;
 }
 
-static prox_vec3 rp(test_rng *r, prox_vec3 o, double s) { return prox_v3_mad(o, s * test_range(r, 0, 1), test_unit(r)); }
-
 static void test_disk_circle_random(void **st)
 {
     (void)st;
     test_rng r = test_rng_seed(1001);
     for (int i = 0; i < 4000; ++i) {
-        double s = pow(10.0, test_range(&r, -6, 6));
-        prox_vec3 o = (i % 5 == 0) ? prox_v3_scale(test_unit(&r), 1e8) : prox_v3_scale(test_unit(&r), s * test_range(&r, 0, 3));
-        prox_disk dk = {rp(&r, o, s), test_unit(&r), s * test_range(&r, 0.1, 1.5)};
-        prox_circle c = {rp(&r, o, s), test_unit(&r), s * test_range(&r, 0.1, 1.5)};
+        double s = tb_random_scale(&r);
+        prox_vec3 o = tb_random_origin(&r, i, s);
+        prox_disk dk = {tb_rp(&r, o, s), test_unit(&r), s * test_range(&r, 0.1, 1.5)};
+        prox_circle c = {tb_rp(&r, o, s), test_unit(&r), s * test_range(&r, 0.1, 1.5)};
         switch (i % 8) {
         case 1: c.normal = dk.normal; break;                 /* parallel planes */
         case 2: c.normal = prox_v3_neg(dk.normal); break;    /* antiparallel */
