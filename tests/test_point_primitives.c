@@ -1,24 +1,7 @@
 /* Point-to-primitive solvers (point_segment.c, point_circle.c, point_disk.c, point_cylsurf.c) against an
  * independent brute force in long double: dense sampling of the primitive's angle, the remaining
  * parameter by clamped projection, golden-section refinement of the best samples. */
-#include "test_util.h"
-
-typedef long double ld;
-typedef struct lv3 {
-    ld x, y, z;
-} lv3;
-static lv3 L(prox_vec3 v) { lv3 r = {v.x, v.y, v.z}; return r; }
-static lv3 ladd(lv3 a, lv3 b) { lv3 r = {a.x + b.x, a.y + b.y, a.z + b.z}; return r; }
-static lv3 lsub(lv3 a, lv3 b) { lv3 r = {a.x - b.x, a.y - b.y, a.z - b.z}; return r; }
-static lv3 lsc(lv3 a, ld s) { lv3 r = {a.x * s, a.y * s, a.z * s}; return r; }
-static ld ldot(lv3 a, lv3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static ld lnorm(lv3 a) { return sqrtl(ldot(a, a)); }
-static lv3 lcross(lv3 a, lv3 b)
-{
-    lv3 r = {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-    return r;
-}
-static lv3 lunit(lv3 a) { return lsc(a, 1.0L / lnorm(a)); }
+#include "test_brute.h"
 
 /* An orthonormal frame (e1, e2) of the plane orthogonal to unit n, built independently of the library. */
 static void lframe(lv3 n, lv3 *e1, lv3 *e2)
@@ -28,14 +11,6 @@ static void lframe(lv3 n, lv3 *e1, lv3 *e2)
     *e2 = lcross(n, *e1);
 }
 
-/* Distance from x to the segment [a, a + d] by clamped projection in long double. */
-static ld lseg_dist(lv3 x, lv3 a, lv3 d)
-{
-    ld dd = ldot(d, d), t = dd > 0 ? ldot(lsub(x, a), d) / dd : 0;
-    t = t < 0 ? 0 : (t > 1 ? 1 : t);
-    return lnorm(lsub(x, ladd(a, lsc(d, t))));
-}
-
 /* Brute-force min over theta of g(theta) = dist(x, segment(theta)), where segment(theta) is
  * [o + rr(cos e1 + sin e2), + len n] (len 0: a circle point; rr = 0 handled by the caller). */
 typedef struct angfam {
@@ -43,38 +18,23 @@ typedef struct angfam {
     ld rr;
     int radial; /* 1: the segment is radial, from o to o + rr(cos e1 + sin e2) */
 } angfam;
-static ld fam_eval(const angfam *F, lv3 x, ld th)
+typedef struct fam_query {
+    const angfam *F;
+    lv3 x;
+} fam_query;
+static ld fam_eval(const void *ctx, ld th)
 {
+    const fam_query *Q = ctx;
+    const angfam *F = Q->F;
     lv3 rad = ladd(lsc(F->e1, cosl(th)), lsc(F->e2, sinl(th)));
-    if (F->radial) return lseg_dist(x, F->o, lsc(rad, F->rr));
-    return lseg_dist(x, ladd(F->o, lsc(rad, F->rr)), F->dir);
+    if (F->radial) return lseg_dist(Q->x, F->o, lsc(rad, F->rr));
+    return lseg_dist(Q->x, ladd(F->o, lsc(rad, F->rr)), F->dir);
 }
-static ld golden(const angfam *F, lv3 x, ld lo, ld hi)
-{
-    const ld g = 0.6180339887498948482L;
-    ld a = lo, b = hi, c = b - g * (b - a), d = a + g * (b - a);
-    ld fc = fam_eval(F, x, c), fd = fam_eval(F, x, d);
-    for (int it = 0; it < 90; ++it) {
-        if (fc < fd) { b = d; d = c; fd = fc; c = b - g * (b - a); fc = fam_eval(F, x, c); }
-        else { a = c; c = d; fc = fd; d = a + g * (b - a); fd = fam_eval(F, x, d); }
-    }
-    ld m = fc < fd ? fc : fd;
-    return m;
-}
+/* 128 samples of theta, every sampled local minimum refined by golden section. */
 static ld fam_min(const angfam *F, lv3 x)
 {
-    enum { N = 128 };
-    ld v[N], best = 1e300L, step = 2 * (ld)PROX_PI / N;
-    for (int i = 0; i < N; ++i) v[i] = fam_eval(F, x, i * step);
-    for (int i = 0; i < N; ++i) {
-        ld f0 = v[i], fm = v[(i + N - 1) % N], fp = v[(i + 1) % N];
-        if (f0 <= fm && f0 <= fp) { /* local minimum of the samples: refine */
-            ld m = golden(F, x, i * step - step, i * step + step);
-            if (m < best) best = m;
-        }
-        if (f0 < best) best = f0;
-    }
-    return best;
+    fam_query Q = {F, x};
+    return tb_min_periodic(fam_eval, &Q, 128);
 }
 
 /* Random geometry: a scale, an origin offset, and a point near the primitive. */
@@ -115,7 +75,7 @@ static void check_point_segment(prox_vec3 p, prox_segment sg)
     assert_near(res.distance, (double)bf, tol);
     assert_near(prox_v3_dist(res.p1, res.p2), res.distance, tol);
     assert_true(res.s2[0] >= 0.0 && res.s2[0] <= 1.0);
-    assert_near((double)lnorm(lsub(L(res.p2), ladd(L(sg.a), lsc(lsub(L(sg.b), L(sg.a)), res.s2[0])))), 0, tol);
+    assert_near(tb_seg_point_err(res.p2, L(sg.a), lsub(L(sg.b), L(sg.a)), res.s2[0]), 0, tol);
     assert_true(res.p1.x == p.x && res.p1.y == p.y && res.p1.z == p.z);
 }
 static void test_point_segment_random(void **st)
@@ -173,19 +133,24 @@ static angfam circle_family(const prox_circle *c, int radial)
     F.radial = radial;
     return F;
 }
-static void check_on_circle(prox_vec3 x, const prox_circle *c, double tol)
+/* Height of x over the plane of c and its distance from c's axis, in long double. */
+static void plane_coords(prox_vec3 x, const prox_circle *c, ld *h, ld *rho)
 {
     lv3 n = lunit(L(c->normal)), d = lsub(L(x), L(c->center));
-    ld h = ldot(d, n);
-    ld rho = lnorm(lsub(d, lsc(n, h)));
+    *h = ldot(d, n);
+    *rho = lnorm(lsub(d, lsc(n, *h)));
+}
+static void check_on_circle(prox_vec3 x, const prox_circle *c, double tol)
+{
+    ld h, rho;
+    plane_coords(x, c, &h, &rho);
     assert_near((double)h, 0, tol);
     assert_near((double)rho, c->radius, tol);
 }
 static void check_on_disk(prox_vec3 x, const prox_disk *c, double tol)
 {
-    lv3 n = lunit(L(c->normal)), d = lsub(L(x), L(c->center));
-    ld h = ldot(d, n);
-    ld rho = lnorm(lsub(d, lsc(n, h)));
+    ld h, rho;
+    plane_coords(x, c, &h, &rho);
     assert_near((double)h, 0, tol);
     assert_true(rho <= c->radius + tol);
 }
