@@ -60,24 +60,23 @@ typedef struct query {
     int parallel;     /* axes parallel to working precision */
     int tag;          /* the groups being generated are the hierarchy's picks */
     int ok;           /* the best candidate is certified */
-    double lower;     /* max of gap(n) over the normals of the best and near-best candidates */
+    double lower;     /* max of gap(n) over the normals evaluated so far (a lower bound) */
+    int best_gap_done; /* the best candidate's own directions are already in `lower` */
     double gap;       /* the best separation seen along the best candidate's normal */
 } query;
 
-static cyl cyl_make(const prox_rcc *c, prox_vec3 origin)
+static void cyl_init(cyl *k, const prox_rcc *c, prox_vec3 origin)
 {
-    cyl k;
-    k.h = prox_v3_norm(c->axis);
-    k.w = prox_v3_scale(c->axis, 1.0 / k.h);
-    k.r = c->radius;
-    k.b = prox_v3_sub(c->base, origin);
-    k.c = prox_v3_mad(k.b, 0.5 * k.h, k.w);
-    k.cap[0] = k.b;
-    k.cap[1] = prox_v3_mad(k.b, k.h, k.w);
-    k.rim[0] = prox_fcircle_make(k.cap[0], k.w, k.r);
-    k.rim[1] = k.rim[0]; /* same frame, other centre */
-    k.rim[1].c = k.cap[1];
-    return k;
+    k->h = prox_v3_norm(c->axis);
+    k->w = prox_v3_scale(c->axis, 1.0 / k->h);
+    k->r = c->radius;
+    k->b = prox_v3_sub(c->base, origin);
+    k->c = prox_v3_mad(k->b, 0.5 * k->h, k->w);
+    k->cap[0] = k->b;
+    k->cap[1] = prox_v3_mad(k->b, k->h, k->w);
+    k->rim[0] = prox_fcircle_make(k->cap[0], k->w, k->r);
+    k->rim[1] = k->rim[0]; /* same frame, other centre */
+    k->rim[1].c = k->cap[1];
 }
 
 /* Support function of a prepared cylinder (see rcc_support.c; same formula, prepared data). */
@@ -121,17 +120,19 @@ static void offer(query *q, prox_vec3 p1, prox_vec3 p2, prox_vec3 n, prox_pair_k
     if (cyl_contains(&q->A, p2, 0.0)) note_common(q, p2);
     double d = prox_v3_dist(p1, p2);
     int better = !q->have_best || d < q->best.d;
-    /* Every normal gives a lower bound on the distance (weak duality); the normals of the best and of
-     * near-ties are the ones that can certify it (a near-parallel S-S normal is poor while the rim
-     * against the side, tied with it, has an exact one). */
-    if (better || d <= q->best.d + 1e-9 * q->scale) {
-        double g = gap_along(q, n);
+    /* Every normal gives a lower bound on the distance (weak duality).  The best candidate's normal
+     * is evaluated lazily by certified(); a near-tie's normal is kept here, because it may certify
+     * the winner better (a near-parallel S-S normal is poor while the rim against the side, tied
+     * with it, has an exact one). */
+    if (q->have_best && fabs(d - q->best.d) <= 1e-9 * q->scale) {
+        double g = gap_along(q, better ? q->best.n : n);
         if (g > q->lower) q->lower = g;
     }
     if (!better) return;
     cand c = {d, p1, p2, n, kind, f1, f2, q->tag};
     q->best = c;
     q->have_best = 1;
+    q->best_gap_done = 0;
 }
 
 /* ---- S-S: common perpendicular of the axes (Agarwal Sec. 3.1, case (a)) ---- */
@@ -317,16 +318,20 @@ static void cand_rim_rim_local(query *q, int ea, int eb, prox_vec3 nest)
 /* ---- certificates and lower bounds ---- */
 
 /* 1 when the best candidate is proven optimal: gap along its normal (or along p2 - p1) matches. */
-static int certified(const query *q, double *gap_out)
+static int certified(query *q, double *gap_out)
 {
     if (!q->have_best) return 0;
-    double g = q->lower;
-    if (q->best.d > 0.0) {
-        double g2 = gap_along(q, prox_v3_scale(prox_v3_sub(q->best.p2, q->best.p1), 1.0 / q->best.d));
-        if (g2 > g) g = g2;
+    if (!q->best_gap_done) { /* its feature normal first, then the direction of p2 - p1 */
+        q->best_gap_done = 1;
+        double g = gap_along(q, q->best.n);
+        if (g > q->lower) q->lower = g;
+        if (q->lower < q->best.d - q->eps && q->best.d > 0.0) {
+            g = gap_along(q, prox_v3_scale(prox_v3_sub(q->best.p2, q->best.p1), 1.0 / q->best.d));
+            if (g > q->lower) q->lower = g;
+        }
     }
-    *gap_out = g;
-    return g >= q->best.d - q->eps;
+    *gap_out = q->lower;
+    return q->lower >= q->best.d - q->eps;
 }
 
 /* Updates the certificate; 1 when the query is decided (certified minimum, or overlap found). */
@@ -602,14 +607,15 @@ PROX_API prox_rcc_result prox_rcc_distance(const prox_rcc *a, const prox_rcc *b)
 
     prox_vec3 origin = prox_v3_mad(a->base, 0.5, a->axis);
     query q;
-    q.A = cyl_make(a, origin);
-    q.B = cyl_make(b, origin);
+    cyl_init(&q.A, a, origin);
+    cyl_init(&q.B, b, origin);
     q.scale = prox_rcc_pair_scale(a, b);
     q.eps = 64.0 * DBL_EPSILON * q.scale;
     q.have_best = 0;
     q.overlap = 0;
     q.tag = 0;
     q.lower = -INFINITY;
+    q.best_gap_done = 0;
     q.parallel = prox_v3_norm2(prox_v3_cross(q.A.w, q.B.w)) <= 1e-30;
 
     /* Cheap overlap witnesses first: either centre inside the other solid. */
