@@ -24,17 +24,16 @@
 static void consider_foot(prox_prim_result *best, const prox_fcircle *d, const prox_fcircle *c, double th2,
                           int force_zero)
 {
-    prox_vec3 x = prox_fcircle_point(c, th2), q = prox_v3_sub(x, d->c);
-    double h = prox_v3_dot(q, d->n), du = prox_v3_dot(q, d->u), dv = prox_v3_dot(q, d->v);
-    double rho = hypot(du, dv);
-    if (!(rho <= d->r)) return;
-    double dist = force_zero ? 0.0 : fabs(h);
+    prox_vec3 x = prox_fcircle_point(c, th2);
+    prox_prim_local l = prox_prim_local_of(d, x);
+    if (!(l.rho <= d->r)) return;
+    double dist = force_zero ? 0.0 : fabs(l.h);
     if (!(dist < best->distance)) return;
     best->distance = dist;
-    best->p1 = prox_v3_mad(x, -h, d->n);
+    best->p1 = prox_v3_mad(x, -l.h, d->n);
     best->p2 = x;
-    best->s1[0] = rho > 0.0 ? prox_prim_angle(dv, du) : 0.0;
-    best->s1[1] = rho;
+    best->s1[0] = prox_prim_local_angle(&l);
+    best->s1[1] = l.rho;
     best->s2[0] = prox_prim_wrap_2pi(th2);
     best->set = 0;
 }

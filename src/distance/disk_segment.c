@@ -22,10 +22,9 @@
 /* Radial distance of the projection of x from the centre (and its angle) in the disk frame. */
 static double radial(const prox_fcircle *f, prox_vec3 x, double *ang)
 {
-    prox_vec3 q = prox_v3_sub(x, f->c);
-    double du = prox_v3_dot(q, f->u), dv = prox_v3_dot(q, f->v), rho = hypot(du, dv);
-    *ang = rho > 0.0 ? prox_prim_angle(dv, du) : 0.0;
-    return rho;
+    prox_prim_local l = prox_prim_local_of(f, x);
+    *ang = prox_prim_local_angle(&l);
+    return l.rho;
 }
 
 /* Distance 0 when the segment meets the disk (step 1); returns 1 and fills res then. */

@@ -15,9 +15,8 @@ PROX_API prox_prim_result prox_point_circle(prox_vec3 p, const prox_circle *c)
         return res;
     }
     if ((res.status = prox_prim_circle_frame(c, &f)) != PROX_OK) return res;
-    prox_vec3 d = prox_v3_sub(p, f.c);
-    double h = prox_v3_dot(d, f.n), du = prox_v3_dot(d, f.u), dv = prox_v3_dot(d, f.v);
-    double rho = hypot(du, dv);
+    prox_prim_local l = prox_prim_local_of(&f, p);
+    double h = l.h, du = l.du, dv = l.dv, rho = l.rho;
     double scale = fmax(f.r, fmax(fabs(h), prox_v3_maxabs(f.c)));
     double th = 0.0;
     if (rho <= PROX_PRIM_AXIS_TOL * scale) {

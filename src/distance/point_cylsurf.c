@@ -17,9 +17,8 @@ PROX_API prox_prim_result prox_point_cylsurf(prox_vec3 p, const prox_cylsurf *s)
     }
     if ((res.status = prox_prim_cylsurf_check(s, 1, &w)) != PROX_OK) return res;
     prox_fcircle f = prox_fcircle_make(s->base, w, s->radius);
-    prox_vec3 q = prox_v3_sub(p, f.c);
-    double z = prox_v3_dot(q, f.n), du = prox_v3_dot(q, f.u), dv = prox_v3_dot(q, f.v);
-    double rho = hypot(du, dv);
+    prox_prim_local l = prox_prim_local_of(&f, p);
+    double z = l.h, du = l.du, dv = l.dv, rho = l.rho;
     double zc = z < 0.0 ? 0.0 : (z > s->height ? s->height : z);
     double scale = fmax(f.r, fmax(fabs(z), fmax(s->height, prox_v3_maxabs(f.c))));
     double cu = 1.0, cv = 0.0, th = 0.0;

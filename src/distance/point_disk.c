@@ -15,9 +15,8 @@ PROX_API prox_prim_result prox_point_disk(prox_vec3 p, const prox_disk *d)
         return res;
     }
     if ((res.status = prox_prim_circle_frame(d, &f)) != PROX_OK) return res;
-    prox_vec3 q = prox_v3_sub(p, f.c);
-    double h = prox_v3_dot(q, f.n), du = prox_v3_dot(q, f.u), dv = prox_v3_dot(q, f.v);
-    double rho = hypot(du, dv);
+    prox_prim_local l = prox_prim_local_of(&f, p);
+    double h = l.h, du = l.du, dv = l.dv, rho = l.rho;
     res.p1 = p;
     if (rho <= f.r) { /* projection inside: the foot of the perpendicular */
         res.p2 = prox_v3_mad(p, -h, f.n);
@@ -29,7 +28,7 @@ PROX_API prox_prim_result prox_point_disk(prox_vec3 p, const prox_disk *d)
         res.distance = hypot(h, rho - f.r);
         res.s2[1] = f.r;
     }
-    res.s2[0] = rho > 0.0 ? prox_prim_angle(dv, du) : 0.0;
+    res.s2[0] = prox_prim_local_angle(&l);
     res.status = PROX_OK;
     return res;
 }

@@ -29,6 +29,27 @@ static inline double prox_prim_wrap_2pi(double t)
     return t < 2.0 * PROX_PI ? t : 0.0;
 }
 
+/* Coordinates of a point x in the frame of circle f: height h along n, components du, dv along u, v
+ * and the distance rho = hypot(du, dv) from the axis. */
+typedef struct prox_prim_local {
+    double h, du, dv, rho;
+} prox_prim_local;
+static inline prox_prim_local prox_prim_local_of(const prox_fcircle *f, prox_vec3 x)
+{
+    prox_vec3 q = prox_v3_sub(x, f->c);
+    prox_prim_local l;
+    l.h = prox_v3_dot(q, f->n);
+    l.du = prox_v3_dot(q, f->u);
+    l.dv = prox_v3_dot(q, f->v);
+    l.rho = hypot(l.du, l.dv);
+    return l;
+}
+/* The angle of x's radial component in [0, 2pi); 0 on the axis (rho = 0). */
+static inline double prox_prim_local_angle(const prox_prim_local *l)
+{
+    return l->rho > 0.0 ? prox_prim_angle(l->dv, l->du) : 0.0;
+}
+
 /* v / n component-wise (the unit normal or axis from a vector of norm n > 0). */
 static inline prox_vec3 prox_prim_unit(prox_vec3 v, double n)
 {

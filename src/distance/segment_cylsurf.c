@@ -44,17 +44,16 @@ static double crossing_param(prox_vec3 g, prox_vec3 g1, double t0, double rho0, 
 /* Fills the surface point closest to x (radial projection); sets *on_axis when x is on the axis. */
 static void surface_point(const prox_fcircle *f, prox_vec3 x, prox_prim_result *res, int *on_axis)
 {
-    prox_vec3 q = prox_v3_sub(x, f->c);
-    double z = prox_v3_dot(q, f->n), du = prox_v3_dot(q, f->u), dv = prox_v3_dot(q, f->v);
-    double rho = hypot(du, dv), cu = 1.0, cv = 0.0;
-    *on_axis = !(rho > 0.0);
+    prox_prim_local l = prox_prim_local_of(f, x);
+    double cu = 1.0, cv = 0.0;
+    *on_axis = !(l.rho > 0.0);
     if (!*on_axis) {
-        cu = du / rho;
-        cv = dv / rho;
+        cu = l.du / l.rho;
+        cv = l.dv / l.rho;
     }
-    res->p2 = prox_v3_add(prox_v3_mad(f->c, z, f->n), prox_v3_add(prox_v3_scale(f->u, f->r * cu), prox_v3_scale(f->v, f->r * cv)));
-    res->s2[0] = z;
-    res->s2[1] = *on_axis ? 0.0 : prox_prim_angle(dv, du);
+    res->p2 = prox_v3_add(prox_v3_mad(f->c, l.h, f->n), prox_v3_add(prox_v3_scale(f->u, f->r * cu), prox_v3_scale(f->v, f->r * cv)));
+    res->s2[0] = l.h;
+    res->s2[1] = prox_prim_local_angle(&l);
 }
 
 PROX_API prox_prim_result prox_segment_cylsurf_inf(const prox_segment *a, const prox_cylsurf *s)
