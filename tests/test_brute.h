@@ -121,6 +121,24 @@ static inline prox_vec3 tb_rp(test_rng *r, prox_vec3 o, double s)
 {
     return prox_v3_mad(o, s * test_range(r, 0, 1), test_unit(r));
 }
+/* A random segment with both ends within s of o. */
+static inline prox_segment tb_random_segment(test_rng *r, prox_vec3 o, double s)
+{
+    prox_segment sg = {tb_rp(r, o, s), tb_rp(r, o, s)};
+    return sg;
+}
+/* A random circle or disk: centre within s of o, random unit normal, radius s U(0.1, 1.5). */
+static inline prox_circle tb_random_circle(test_rng *r, prox_vec3 o, double s)
+{
+    prox_circle c = {tb_rp(r, o, s), test_unit(r), s * test_range(r, 0.1, 1.5)};
+    return c;
+}
+/* A random cylindrical surface (height 0): base within s of o, random unit axis, radius s U(0.05, 1.5). */
+static inline prox_cylsurf tb_random_cylsurf(test_rng *r, prox_vec3 o, double s)
+{
+    prox_cylsurf cs = {tb_rp(r, o, s), test_unit(r), 0, s * test_range(r, 0.05, 1.5)};
+    return cs;
+}
 
 /* Coordinate scale of a segment against a round primitive (centre c, radius r): the largest coordinate,
  * radius or segment length; tolerances are 1e-12 of it. */

@@ -58,8 +58,8 @@ static void test_circle_segment_random(void **st)
     for (int i = 0; i < 6000; ++i) {
         double s = tb_random_scale(&r);
         prox_vec3 o = tb_random_origin(&r, i, s);
-        prox_circle c = {tb_rp(&r, o, s), test_unit(&r), s * test_range(&r, 0.1, 1.5)};
-        prox_segment sg = {tb_rp(&r, o, 2 * s), tb_rp(&r, o, 2 * s)};
+        prox_circle c = tb_random_circle(&r, o, s);
+        prox_segment sg = tb_random_segment(&r, o, 2 * s);
         prox_vec3 u, v;
         prox_circle_frame(&c, &u, &v);
         switch (i % 8) {

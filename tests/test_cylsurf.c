@@ -48,8 +48,8 @@ static void test_segment_cylsurf_random(void **st)
     for (int i = 0; i < 4000; ++i) {
         double s = tb_random_scale(&r);
         prox_vec3 o = tb_random_origin(&r, i, s);
-        prox_cylsurf cs = {tb_rp(&r, o, s), test_unit(&r), 0, s * test_range(&r, 0.05, 1.5)};
-        prox_segment sg = {tb_rp(&r, o, 2 * s), tb_rp(&r, o, 2 * s)};
+        prox_cylsurf cs = tb_random_cylsurf(&r, o, s);
+        prox_segment sg = tb_random_segment(&r, o, 2 * s);
         switch (i % 6) {
         case 1: sg.b = prox_v3_mad(sg.a, s * test_range(&r, -2, 2), cs.dir); break; /* parallel to the axis */
         case 2: sg.b = sg.a; break;                                                 /* zero length */
@@ -145,8 +145,8 @@ static void test_cylsurf_cylsurf_random(void **st)
     for (int i = 0; i < 20000; ++i) {
         double s = tb_random_scale(&r);
         prox_vec3 o = tb_random_origin(&r, i, s);
-        prox_cylsurf a = {tb_rp(&r, o, s), test_unit(&r), 0, s * test_range(&r, 0.05, 1.5)};
-        prox_cylsurf b = {tb_rp(&r, o, s), test_unit(&r), 0, s * test_range(&r, 0.05, 1.5)};
+        prox_cylsurf a = tb_random_cylsurf(&r, o, s);
+        prox_cylsurf b = tb_random_cylsurf(&r, o, s);
         int compare = prox_v3_norm(prox_v3_cross(a.dir, b.dir)) > 1e-2;
         if (i % 10 == 3) { /* near parallel: properties only */
             b.dir = prox_v3_normalize(prox_v3_mad(a.dir, pow(10.0, test_range(&r, -11, -3)), test_unit(&r)));

@@ -43,8 +43,8 @@ static void test_disk_circle_random(void **st)
     for (int i = 0; i < 4000; ++i) {
         double s = tb_random_scale(&r);
         prox_vec3 o = tb_random_origin(&r, i, s);
-        prox_disk dk = {tb_rp(&r, o, s), test_unit(&r), s * test_range(&r, 0.1, 1.5)};
-        prox_circle c = {tb_rp(&r, o, s), test_unit(&r), s * test_range(&r, 0.1, 1.5)};
+        prox_disk dk = tb_random_circle(&r, o, s);
+        prox_circle c = tb_random_circle(&r, o, s);
         switch (i % 8) {
         case 1: c.normal = dk.normal; break;                 /* parallel planes */
         case 2: c.normal = prox_v3_neg(dk.normal); break;    /* antiparallel */

@@ -154,14 +154,21 @@ static void check_on_disk(prox_vec3 x, const prox_disk *c, double tol)
     assert_near((double)h, 0, tol);
     assert_true(rho <= c->radius + tol);
 }
+/* Checks shared by point-circle (radial 0) and point-disk (radial 1): status, distance against the
+ * brute force, |p1 - p2| = distance. Returns the tolerance. */
+static double check_round_common(const prox_prim_result *res, prox_vec3 p, const prox_circle *c, int radial)
+{
+    assert_int_equal(res->status, PROX_OK);
+    double sc = scale_of(p, scale_of(c->center, c->radius)), tol = tol_of(sc);
+    angfam F = circle_family(c, radial);
+    assert_near(res->distance, (double)fam_min(&F, L(p)), tol);
+    assert_near(prox_v3_dist(res->p1, res->p2), res->distance, tol);
+    return tol;
+}
 static void check_point_circle(prox_vec3 p, prox_circle c)
 {
     prox_prim_result res = prox_point_circle(p, &c);
-    assert_int_equal(res.status, PROX_OK);
-    double sc = scale_of(p, scale_of(c.center, c.radius)), tol = tol_of(sc);
-    angfam F = circle_family(&c, 0);
-    assert_near(res.distance, (double)fam_min(&F, L(p)), tol);
-    assert_near(prox_v3_dist(res.p1, res.p2), res.distance, tol);
+    double tol = check_round_common(&res, p, &c, 0);
     check_on_circle(res.p2, &c, tol);
     prox_circle cu = c; /* prox_circle_point expects a unit normal */
     cu.normal = prox_v3_normalize(c.normal);
@@ -171,11 +178,7 @@ static void check_point_circle(prox_vec3 p, prox_circle c)
 static void check_point_disk(prox_vec3 p, prox_disk c)
 {
     prox_prim_result res = prox_point_disk(p, &c);
-    assert_int_equal(res.status, PROX_OK);
-    double sc = scale_of(p, scale_of(c.center, c.radius)), tol = tol_of(sc);
-    angfam F = circle_family(&c, 1);
-    assert_near(res.distance, (double)fam_min(&F, L(p)), tol);
-    assert_near(prox_v3_dist(res.p1, res.p2), res.distance, tol);
+    double tol = check_round_common(&res, p, &c, 1);
     check_on_disk(res.p2, &c, tol);
     prox_vec3 u, v;
     prox_circle cu = c;

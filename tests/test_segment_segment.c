@@ -47,7 +47,7 @@ static void test_segment_segment_random(void **st)
     for (int i = 0; i < 20000; ++i) {
         double s = tb_random_scale(&r);
         prox_vec3 o = tb_random_origin(&r, i, s);
-        prox_segment s1 = {tb_rp(&r, o, s), tb_rp(&r, o, s)}, s2 = {tb_rp(&r, o, s), tb_rp(&r, o, s)};
+        prox_segment s1 = tb_random_segment(&r, o, s), s2 = tb_random_segment(&r, o, s);
         prox_vec3 d1 = prox_v3_sub(s1.b, s1.a);
         switch (i % 8) {
         case 1: /* exactly parallel (scaled copy of the direction) */
