@@ -93,7 +93,11 @@ static double cc_polish(const cc_prob *p, double th, cc_eval *out)
         if (step > 0.5) step = 0.5;
         if (step < -0.5) step = -0.5;
         int moved = 0;
-        for (int k = 0; k < 6; ++k, step *= 0.5) {
+        /* A Newton step below 1e-9 rad is in the quadratic regime: |h| there is rounding noise, so
+         * a failed decrease means convergence, not a step to halve (halving would only cost six
+         * more evaluations per call). */
+        int tiny = fabs(step) <= 1e-9;
+        for (int k = 0; k < (tiny ? 1 : 6); ++k, step *= 0.5) {
             cc_eval en = cc_at(p, th - step);
             if (!en.axis && fabs(en.h) < fabs(e.h)) {
                 th -= step, e = en, moved = 1;
