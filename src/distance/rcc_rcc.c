@@ -599,23 +599,67 @@ static int is_point_set(const query *q)
            prox_v3_norm(prox_v3_reject(prox_v3_sub(q->B.c, q->A.c), q->A.w)) <= q->eps;
 }
 
+/* Steps 5-6 of the file comment: candidate groups cheapest first, each followed by the certificate;
+ * then the overlap decisions.  Leaves either q->overlap with a common point or a best candidate. */
+static prox_status search(query *q, const prox_rcc *a, const prox_rcc *b, prox_agarwal_case cs, int ea, int eb)
+{
+    if (!settle(q) && cs != PROX_CASE_1) hierarchy_groups(q, ea, eb, cs);
+    if (!settle(q)) closed_form_groups(q, ea, eb, cs, 1); /* fast path: local Newton */
+    if (!settle(q)) rim_rim_groups(q, ea, eb, cs, 0);
+    prox_vec3 last = q->A.c;
+    if (!settle(q) && !(q->gap > 0.0) && !separated_cheaply(q)) /* quick overlap search */
+        find_common_point(q, q->have_best ? prox_v3_scale(prox_v3_add(q->best.p1, q->best.p2), 0.5)
+                                          : prox_v3_scale(prox_v3_add(q->A.c, q->B.c), 0.5), 8, &last);
+    if (!settle(q)) closed_form_groups(q, ea, eb, cs, 0); /* complete: quartics, then degree 8 */
+    if (!settle(q)) {
+        prox_status st = rim_rim_groups(q, ea, eb, cs, 1);
+        if (st != PROX_OK) return st;
+    }
+    if (!settle(q) && q->have_best) {
+        /* Not certified (near-touching or near-parallel contacts): the certified separating-axis
+         * verdict (src/sat) decides; only an intersecting pair needs a common point. */
+        prox_sat_result v = prox_rcc_sat(a, b);
+        if (v.status == PROX_OK && v.intersect &&
+            !find_common_point(q, prox_v3_scale(prox_v3_add(q->best.p1, q->best.p2), 0.5), 200, &last))
+            note_common(q, last); /* within the verdict's touching band */
+    }
+    if (!q->overlap && !q->have_best && !find_common_point(q, q->A.c, 1000, &last)) {
+        q->overlap = 1; /* no candidate at all happens only for overlapping solids: touching limit */
+        q->common = last;
+    }
+    return PROX_OK;
+}
+
+/* Fills the result of a disjoint pair from the best candidate. */
+static void fill_disjoint(const query *q, prox_rcc_result *res, prox_vec3 origin)
+{
+    if (res->agarwal == PROX_CASE_2_1 && q->best.kind != PROX_PAIR_CS && q->best.kind != PROX_PAIR_SS)
+        res->agarwal = PROX_CASE_2_2; /* the foot of P(D, z) fell beyond the axis segment (Fig. 7 (b)) */
+    res->hierarchy_exact = q->best.from_hierarchy;
+    res->distance = q->best.d;
+    res->p1 = prox_v3_add(q->best.p1, origin);
+    res->p2 = prox_v3_add(q->best.p2, origin);
+    res->pair = q->best.kind;
+    res->feature1 = q->best.f1;
+    res->feature2 = q->best.f2;
+    res->certificate_gap = q->lower;
+    res->point_set = is_point_set(q);
+}
+
 PROX_API prox_rcc_result prox_rcc_distance(const prox_rcc *a, const prox_rcc *b)
 {
     prox_rcc_result res = {0};
     if ((res.status = prox_rcc_validate(a)) != PROX_OK) return res;
     if ((res.status = prox_rcc_validate(b)) != PROX_OK) return res;
 
+    /* Step 1: both cylinders prepared relative to A's centre. */
     prox_vec3 origin = prox_v3_mad(a->base, 0.5, a->axis);
-    query q;
+    query q = {0};
     cyl_init(&q.A, a, origin);
     cyl_init(&q.B, b, origin);
     q.scale = prox_rcc_pair_scale(a, b);
     q.eps = 64.0 * DBL_EPSILON * q.scale;
-    q.have_best = 0;
-    q.overlap = 0;
-    q.tag = 0;
-    q.lower = -INFINITY;
-    q.best_gap_done = 0;
+    q.lower = q.gap = -INFINITY;
     q.parallel = prox_v3_norm2(prox_v3_cross(q.A.w, q.B.w)) <= 1e-30;
 
     /* Cheap overlap witnesses first: either centre inside the other solid. */
@@ -623,53 +667,13 @@ PROX_API prox_rcc_result prox_rcc_distance(const prox_rcc *a, const prox_rcc *b)
     else if (cyl_contains(&q.A, q.B.c, 0.0)) note_common(&q, q.B.c);
 
     int ea, eb;
-    prox_agarwal_case cs = classify(&q, &ea, &eb);
-    res.agarwal = cs;
-    q.gap = -INFINITY;
-    q.ok = 0;
-    /* Each step adds candidates and stops the query as soon as the best one is certified. */
-    if (!settle(&q) && cs != PROX_CASE_1) hierarchy_groups(&q, ea, eb, cs);
-    if (!settle(&q)) closed_form_groups(&q, ea, eb, cs, 1); /* fast path: local Newton */
-    if (!settle(&q)) rim_rim_groups(&q, ea, eb, cs, 0);
-    prox_vec3 last = q.A.c;
-    if (!settle(&q) && !(q.gap > 0.0) && !separated_cheaply(&q)) /* quick overlap search */
-        find_common_point(&q, q.have_best ? prox_v3_scale(prox_v3_add(q.best.p1, q.best.p2), 0.5)
-                                          : prox_v3_scale(prox_v3_add(q.A.c, q.B.c), 0.5), 8, &last);
-    if (!settle(&q)) closed_form_groups(&q, ea, eb, cs, 0); /* complete: quartics, then degree 8 */
-    if (!settle(&q) && (res.status = rim_rim_groups(&q, ea, eb, cs, 1)) != PROX_OK) return res;
-    int ok = settle(&q) && !q.overlap;
-    double gap = q.gap;
-    if (!ok && !q.overlap && q.have_best) {
-        /* Not certified (near-touching or near-parallel contacts): the certified separating-axis
-         * verdict (src/sat) decides; only an intersecting pair needs a common point. */
-        prox_sat_result v = prox_rcc_sat(a, b);
-        if (v.status == PROX_OK && v.intersect &&
-            !find_common_point(&q, prox_v3_scale(prox_v3_add(q.best.p1, q.best.p2), 0.5), 200, &last))
-            note_common(&q, last); /* within the verdict's touching band */
-    }
-    if (!q.overlap && !q.have_best) { /* no candidate at all: only possible when overlapping */
-        if (!find_common_point(&q, q.A.c, 1000, &last)) { /* touching limit: nothing else to report */
-            q.overlap = 1;
-            q.common = last;
-        }
-    }
-
+    res.agarwal = classify(&q, &ea, &eb); /* step 2 */
+    if ((res.status = search(&q, a, b, res.agarwal, ea, eb)) != PROX_OK) return res;
     if (q.overlap) {
         containment(&q, &res);
         fill_overlap(&q, &res, origin);
-        return res;
+    } else {
+        fill_disjoint(&q, &res, origin);
     }
-    if (!ok) certified(&q, &gap);
-    res.hierarchy_exact = q.best.from_hierarchy;
-    if (res.agarwal == PROX_CASE_2_1 && q.best.kind != PROX_PAIR_CS && q.best.kind != PROX_PAIR_SS)
-        res.agarwal = PROX_CASE_2_2; /* the foot of P(D, z) fell beyond the axis segment (Fig. 7 (b)) */
-    res.distance = q.best.d;
-    res.p1 = prox_v3_add(q.best.p1, origin);
-    res.p2 = prox_v3_add(q.best.p2, origin);
-    res.pair = q.best.kind;
-    res.feature1 = q.best.f1;
-    res.feature2 = q.best.f2;
-    res.certificate_gap = gap;
-    res.point_set = is_point_set(&q);
     return res;
 }
