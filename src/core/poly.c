@@ -298,12 +298,229 @@ static void poly_finish(const double *c, int degree, const poly_cand *z, int n, 
     *count = m;
 }
 
+/* ---- Fast real-root path for degree 5..8: derivative chain (docs/algorithms/poly.md) ----------
+ * The real roots of q_{j+1} = q_j' / (j+1) split the real line into pieces where q_j is monotone,
+ * so each piece holds at most one root of q_j, found by safeguarded Newton inside the sign-change
+ * bracket. Starting from the linear q_{n-1}, every level gives the breakpoints of the next one up
+ * to p itself. All real roots of p and its derivatives lie in [-B, B] (Gauss-Lucas), B a
+ * Fujiwara-type bound of p. Only real roots are ever computed. */
+
+/* Iteration cap of one bracketed solve; hitting it is "trouble" (fallback to QR). */
+#define POLY_FAST_MAXIT 120
+/* Touching tolerance at the derivative levels: a breakpoint too many is harmless, one missing is not. */
+#define POLY_FAST_TOUCH_LOW 1e-8
+/* An extremum of p crossing zero by less than this x sum |c_k| |x|^k (a bound of Horner's rounding
+ * error at degree 8, 2n eps, doubled) is one double root: the sign of p there is noise. */
+#define POLY_FAST_SNAP (32.0 * POLY_EPS)
+
+/* p, p' and sum |c_k| |x|^k (the rounding scale of p) at x in one Horner pass. */
+static double poly_eval_d1s(const double *c, int degree, double x, double *d1, double *scale)
+{
+    double p = c[degree], d = 0.0, ax = fabs(x), s = fabs(c[degree]);
+    for (int k = degree - 1; k >= 0; --k) {
+        d = d * x + p;
+        p = p * x + c[k];
+        s = s * ax + fabs(c[k]);
+    }
+    *d1 = d;
+    *scale = s;
+    return p;
+}
+
+/* A bisection point of (a, b): geometric when both ends have one sign and differ by a large ratio
+ * (roots spread over decades), 0 when the interval straddles it widely, else the midpoint. */
+static double poly_mid(double a, double b)
+{
+    if (a > 0.0 && b > 16.0 * a) return sqrt(a) * sqrt(b);
+    if (b < 0.0 && a < 16.0 * b) return -(sqrt(-a) * sqrt(-b));
+    if (a < 0.0 && b > 0.0 && (b > -16.0 * a || a < -16.0 * b)) return 0.0;
+    return 0.5 * a + 0.5 * b;
+}
+
+/* The root of q (degree d) in the open interval (lo, hi) where q is monotone and q(lo) q(hi) < 0
+ * (flo = q(lo)), from the start x0 (ignored unless inside): Newton, replaced by bisection whenever
+ * its step leaves the bracket or fails to halve the step before last (rtsafe-style). Stops after one
+ * more Newton step once |q| is within the rounding bound 2 d eps sum |c_k| |x|^k (the bound is
+ * pessimistic; the last step recovers the digits it would cost), or when the step is at the last
+ * bits. Returns 0 when
+ * the cap is hit or a value is not finite. */
+static int poly_bracket(const double *q, int d, double lo, double flo, double hi, double x0, double *root)
+{
+    double xn = lo, xp = hi; /* q(xn) < 0 < q(xp) */
+    if (flo > 0.0) xn = hi, xp = lo;
+    double x = x0 > lo && x0 < hi ? x0 : poly_mid(lo, hi), df, s, f = poly_eval_d1s(q, d, x, &df, &s);
+    double step = hi - lo, step_old = step;
+    const double noise = 2.0 * d * POLY_EPS;
+    for (int it = 0;; ++it) {
+        if (!isfinite(f) || it == POLY_FAST_MAXIT) return 0;
+        if (f < 0.0) xn = x;
+        else xp = x;
+        const double a = fmin(xn, xp), b = fmax(xn, xp);
+        double nx = x - f / df;
+        if (fabs(f) <= noise * s) { /* at the rounding level: one last Newton step, if it stays inside */
+            if (nx > a && nx < b) x = nx;
+            break;
+        }
+        if (!(nx > a && nx < b) || !(fabs(f) <= 0.5 * fabs(step_old * df))) nx = poly_mid(a, b);
+        step_old = step;
+        step = nx - x;
+        x = nx;
+        if (fabs(step) <= 4.0 * POLY_EPS * fabs(x) || x == a || x == b) break;
+        f = poly_eval_d1s(q, d, x, &df, &s);
+    }
+    *root = x;
+    return 1;
+}
+
+/* p, p'' / 2 and sum |c_k| |x|^k at x in one Horner pass (p' is not needed at a breakpoint). */
+static double poly_eval_brk(const double *c, int degree, double x, double *half_d2, double *scale)
+{
+    double p = c[degree], d = 0.0, dd = 0.0, ax = fabs(x), s = fabs(c[degree]);
+    for (int k = degree - 1; k >= 0; --k) {
+        dd = dd * x + d;
+        d = d * x + p;
+        p = p * x + c[k];
+        s = s * ax + fabs(c[k]);
+    }
+    *half_d2 = dd;
+    *scale = s;
+    return p;
+}
+
+/* -1, 0, +1. */
+static int poly_sign(double v) { return (v > 0.0) - (v < 0.0); }
+
+/* Newton start for the root of a piece beside breakpoint x (q' = 0 there): the root of the Taylor
+ * quadratic q(x) + (q''/2) t^2 on the side dir (+1 right, -1 left); NaN when it has none. */
+static double poly_taylor_start(double x, double v, double half_d2, int dir)
+{
+    double t2 = -v / half_d2;
+    return t2 > 0.0 ? x + dir * sqrt(t2) : NAN;
+}
+
+/* Real roots of q (degree d >= 1) given the sorted breakpoints brk[0..nb-1] (the real roots of q',
+ * possibly with extras) and the bound B: one bracketed solve per monotone piece with a sign change.
+ * A breakpoint is itself a root when q vanishes there exactly, or when it is an extremum (both
+ * neighbours of one sign) with |q| <= tol x sum |c_k| |x|^k, tol = touch if it does not cross zero
+ * (the touching case: a complex pair with a tiny imaginary part) and tol = snap if it does (the sign
+ * of q there is rounding noise: one double root, not a noise-split pair). A breakpoint root counts
+ * as a zero of q, so the pieces beside it hold no other root.
+ * Writes the roots in increasing order and returns their number, -1 on trouble. */
+static int poly_level(const double *q, int d, const double *brk, int nb, double B, double touch, double snap,
+                      double *out)
+{
+    double val[PROX_POLY_MAX_DEGREE], scl[PROX_POLY_MAX_DEGREE], h2[PROX_POLY_MAX_DEGREE];
+    int sg[PROX_POLY_MAX_DEGREE + 2], at[PROX_POLY_MAX_DEGREE]; /* signs at -inf, breakpoints, +inf */
+    const int slead = poly_sign(q[d]);
+    sg[0] = d % 2 ? -slead : slead;
+    sg[nb + 1] = slead;
+    for (int i = 0; i < nb; ++i) {
+        val[i] = poly_eval_brk(q, d, brk[i], &h2[i], &scl[i]);
+        if (!isfinite(val[i])) return -1;
+        sg[i + 1] = poly_sign(val[i]);
+    }
+    for (int i = 0; i < nb; ++i) { /* breakpoint roots, from the signs before any is zeroed */
+        const int s = sg[i + 1], side = sg[i] == sg[i + 2] ? sg[i] : 0;
+        const double tol = side == 0 ? 0.0 : side == s ? touch : snap;
+        at[i] = s == 0 || fabs(val[i]) <= tol * scl[i];
+    }
+    for (int i = 0; i < nb; ++i)
+        if (at[i]) sg[i + 1] = 0;
+    int m = 0;
+    for (int i = 0; i <= nb; ++i) {
+        /* the piece (left, right) between breakpoints i-1 and i */
+        if (sg[i] * sg[i + 1] < 0) {
+            double left = i > 0 ? brk[i - 1] : -B, right = i < nb ? brk[i] : B, fl, x0;
+            if (i == 0) { /* the outer pieces need the value at the bound */
+                fl = prox_poly_eval(q, d, left, NULL);
+                if (poly_sign(fl) != sg[0]) return -1;
+            } else {
+                fl = val[i - 1];
+            }
+            if (i == nb && poly_sign(prox_poly_eval(q, d, right, NULL)) != sg[nb + 1]) return -1;
+            if (!(left < right)) return -1;
+            /* start from the Taylor quadratic of the breakpoint end where |q| is smaller */
+            if (i > 0 && (i == nb || fabs(val[i - 1]) <= fabs(val[i])))
+                x0 = poly_taylor_start(left, val[i - 1], h2[i - 1], 1);
+            else if (i < nb)
+                x0 = poly_taylor_start(right, val[i], h2[i], -1);
+            else
+                x0 = NAN;
+            if (!poly_bracket(q, d, left, fl, right, x0, &out[m])) return -1;
+            ++m;
+        }
+        if (i < nb && at[i]) out[m++] = brk[i];
+    }
+    return m;
+}
+
+/* Power-of-two Fujiwara-type bound on the moduli of all roots of w[0..n] (w[n] != 0):
+ * 2 max_k |w_k / w_n|^(1/(n-k)), each term rounded up to a power of two, times 2 for margin. */
+static double poly_root_bound(const double *w, int n)
+{
+    int e = -1074;
+    for (int k = 0; k < n; ++k) {
+        if (w[k] == 0.0) continue;
+        int ek = ilogb(w[k]) - ilogb(w[n]) + 2; /* |w_k / w_n| < 2^ek */
+        int r = ek >= 0 ? (ek + (n - k) - 1) / (n - k) : -((-ek) / (n - k));
+        if (r > e) e = r;
+    }
+    return ldexp(1.0, e + 2);
+}
+
+/* Real roots of w[0..n] (5 <= n <= 8, w[n] != 0) by the derivative chain, polished on full[0..deg]
+ * when the degree was deflated. Returns the count, -1 on trouble (the caller falls back to QR). */
+static int poly_fast_roots(const double *w, int n, const double *full, int deg, double *roots)
+{
+    static const double binom[PROX_POLY_MAX_DEGREE + 1][PROX_POLY_MAX_DEGREE + 1] = {
+        {1}, {1, 1}, {1, 2, 1}, {1, 3, 3, 1}, {1, 4, 6, 4, 1}, {1, 5, 10, 10, 5, 1},
+        {1, 6, 15, 20, 15, 6, 1}, {1, 7, 21, 35, 35, 21, 7, 1}, {1, 8, 28, 56, 70, 56, 28, 8, 1}};
+    const double B = poly_root_bound(w, n);
+    if (!isfinite(B)) return -1;
+    double q[PROX_POLY_MAX_DEGREE + 1], brk[PROX_POLY_MAX_DEGREE], cur[PROX_POLY_MAX_DEGREE];
+    /* q_{n-1} = p^(n-1) / (n-1)!: linear */
+    brk[0] = -(binom[n - 1][n - 1] * w[n - 1]) / (binom[n][n - 1] * w[n]);
+    int nb = 1;
+    for (int j = n - 2; j >= 0; --j) {
+        const int d = n - j;
+        for (int k = 0; k <= d; ++k) q[k] = binom[k + j][j] * w[k + j]; /* q_j = p^(j) / j! */
+        int m = j > 0 ? poly_level(q, d, brk, nb, B, POLY_FAST_TOUCH_LOW, 0.0, cur)
+                      : poly_level(q, d, brk, nb, B, POLY_DOUBLE_REL, POLY_FAST_SNAP, cur);
+        if (m < 0) return -1;
+        for (int i = 0; i < m; ++i) brk[i] = cur[i];
+        nb = m;
+    }
+    if (deg > n) { /* polish on the undeflated polynomial, never past half the gap to a neighbour */
+        for (int i = 0; i < nb; ++i) {
+            double gap = INFINITY;
+            if (i > 0) gap = fmin(gap, brk[i] - brk[i - 1]);
+            if (i + 1 < nb) gap = fmin(gap, brk[i + 1] - brk[i]);
+            roots[i] = poly_polish(full, deg, brk[i], 0.5 * gap);
+        }
+        for (int i = 1; i < nb; ++i) /* polish keeps the order up to ties; re-sort cheaply */
+            for (int k = i; k > 0 && roots[k - 1] > roots[k]; --k) {
+                double t = roots[k];
+                roots[k] = roots[k - 1], roots[k - 1] = t;
+            }
+    } else {
+        for (int i = 0; i < nb; ++i) roots[i] = brk[i];
+    }
+    return nb;
+}
+
 prox_status prox_poly_real_roots(const double *c, int degree, double *roots, int *count)
 {
     double w[PROX_POLY_MAX_DEGREE + 1];
     int n;
     prox_status st = poly_prepare(c, degree, roots, count, w, &n);
     if (st != PROX_OK || n == 0) return st;
+    if (n >= 5) { /* derivative chain; QR only when it reports trouble */
+        int m = poly_fast_roots(w, n, w, degree, roots);
+        if (m >= 0) {
+            *count = m;
+            return PROX_OK;
+        }
+    }
     poly_cand z[PROX_POLY_MAX_DEGREE];
     int closed = 0;
     if (n <= 4) {
