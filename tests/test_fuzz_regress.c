@@ -3,6 +3,7 @@
 #include "test_util.h"
 
 #include "prox/query.h"
+#include "prox/sat.h"
 
 /* fuzz_queries crash-6fd5bd04: an RPP whose extents are subnormal (~3.5e-310) against a sphere
  * whose centre and radius are subnormal: both validate, yet prox_shape_distance answered PROX_OK
@@ -29,11 +30,25 @@ static void test_fuzz_subnormal_rpp_sph(void **state)
     if (k.status == PROX_OK) assert_false(isnan(k.clearance));
 }
 
+/* fuzz_queries crash queries-sat-range-5d681c9b: prox_rcc_sat had its own quick validator and
+ * answered PROX_OK for a cylinder of radius 2.8e-312 that prox_rcc_validate rejects as out of range. */
+static void test_fuzz_sat_range(void **state)
+{
+    (void)state;
+    prox_rcc a = {prox_v3(0, 0, 0), prox_v3(0, 0, 1), 2.8e-312};
+    prox_rcc b = {prox_v3(0.5, 0, 0), prox_v3(0, 1, 0), 1};
+    assert_int_equal(prox_rcc_validate(&a), PROX_EINVAL_RANGE);
+    assert_int_equal(prox_rcc_sat(&a, &b).status, PROX_EINVAL_RANGE);
+    assert_int_equal(prox_rcc_sat(&b, &a).status, PROX_EINVAL_RANGE);
+    assert_int_equal(prox_rcc_distance(&a, &b).status, PROX_EINVAL_RANGE);
+}
+
 int main(void)
 {
     test_init();
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_fuzz_subnormal_rpp_sph),
+        cmocka_unit_test(test_fuzz_sat_range),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -8,6 +8,7 @@
 #include "distance/box_internal.h"
 #include "prox/support.h"
 #include "prox/distance.h"
+#include "prox/sat.h"
 
 /* Kind after RPP -> BOX, and the box itself. */
 typedef struct norm_shape {
@@ -132,6 +133,12 @@ PROX_API prox_test_result prox_shape_test(const prox_shape *a, const prox_shape 
     if (rank(na.kind) > rank(nb.kind)) x = &nb, y = &na;
     if (x->kind == PROX_SHAPE_BOX && y->kind == PROX_SHAPE_BOX) return prox_box_box_test(&x->box, &y->box);
     if (x->kind == PROX_SHAPE_BOX && y->kind == PROX_SHAPE_RCC) return prox_box_rcc_test(&x->box, &y->s->u.rcc);
+    if (x->kind == PROX_SHAPE_RCC && y->kind == PROX_SHAPE_RCC) { /* the certified SAT: ~6x cheaper */
+        prox_sat_result v = prox_rcc_sat(&x->s->u.rcc, &y->s->u.rcc);
+        r.status = v.status;
+        r.intersect = v.intersect;
+        return r;
+    }
     prox_distance_result d = dist_canon(x, y);
     r.status = d.status;
     r.intersect = d.intersect;
