@@ -4,7 +4,10 @@
  * Ferrari's quartic through the resolvent cubic 8m^3 + 8p m^2 + (2p^2 - 8r) m - q^2 = 0
  * (docs/algorithms/poly.md); degree 5..8 through GSL's balanced companion-matrix QR with a
  * workspace on the stack. Every candidate is polished by Newton on the original polynomial, and
- * near-real complex pairs are tested for a near-double real root at a stationary point of p. */
+ * near-real complex pairs are tested for a near-double real root at a stationary point of p.
+ * prox_poly_real_roots_fast: degree 5..8 by the derivative chain (real roots of p' bound the
+ * monotone pieces of p, recursively down to the linear p^(n-1); safeguarded Newton per piece),
+ * docs/algorithms/poly.md; opt-in, see there why it is not the default. */
 #include "core/poly.h"
 
 #include <float.h>
@@ -20,6 +23,8 @@
 #define POLY_REAL_IM_REL 1e-12
 /* A near-double real root is accepted where |p| <= this x (sum |c_k| |x|^k) at the stationary point. */
 #define POLY_DOUBLE_REL 1e-10
+/* After deflation a root must make the full polynomial vanish to this x sum |c_k| |x|^k. */
+#define POLY_ARTIFACT_REL 1e-8
 
 /* A complex candidate root. */
 typedef struct poly_cand {
@@ -34,6 +39,18 @@ double prox_poly_eval(const double *c, int degree, double x, double *deriv)
         p = p * x + c[k];
     }
     if (deriv) *deriv = d;
+    return p;
+}
+
+/* p and sum |c_k| |x|^k at x in one Horner pass. */
+static double poly_eval_abs(const double *c, int degree, double x, double *scale)
+{
+    double p = c[degree], ax = fabs(x), s = fabs(c[degree]);
+    for (int k = degree - 1; k >= 0; --k) {
+        p = p * x + c[k];
+        s = s * ax + fabs(c[k]);
+    }
+    *scale = s;
     return p;
 }
 
@@ -270,6 +287,21 @@ static int poly_closed_ok(const double *w, int n, const poly_cand *z)
     return 1;
 }
 
+/* After deflation (the degree-n part solved, polished on the full polynomial of degree deg > n):
+ * drops roots where the full polynomial does not vanish, |p| > 1e-8 sum |c_k| |x|^k. Those are
+ * roots of the deflated part out where the dropped leading terms dominate (e.g. the quartic root
+ * -c_3/c_4 of a quintic whose c_4 and c_5 are both below 1e-14 x max |c_k| but only c_5 was
+ * deflated), not roots of the input. Keeps the order; returns the new count. */
+static int poly_drop_artifacts(const double *c, int deg, double *roots, int m)
+{
+    int k = 0;
+    for (int i = 0; i < m; ++i) {
+        double s, p = poly_eval_abs(c, deg, roots[i], &s);
+        if (fabs(p) <= POLY_ARTIFACT_REL * s) roots[k++] = roots[i];
+    }
+    return k;
+}
+
 /* Turns complex candidates into polished real roots, sorted ascending. */
 static void poly_finish(const double *c, int degree, const poly_cand *z, int n, double *roots, int *count)
 {
@@ -295,7 +327,7 @@ static void poly_finish(const double *c, int degree, const poly_cand *z, int n, 
             double t = roots[j];
             roots[j] = roots[j - 1], roots[j - 1] = t;
         }
-    *count = m;
+    *count = n < degree ? poly_drop_artifacts(c, degree, roots, m) : m;
 }
 
 /* ---- Fast real-root path for degree 5..8: derivative chain (docs/algorithms/poly.md) ----------
@@ -309,6 +341,10 @@ static void poly_finish(const double *c, int degree, const poly_cand *z, int n, 
 #define POLY_FAST_MAXIT 120
 /* Touching tolerance at the derivative levels: a breakpoint too many is harmless, one missing is not. */
 #define POLY_FAST_TOUCH_LOW 1e-8
+/* Newton at the derivative levels stops after a step below this x |x|: the accepted point is then
+ * within ~(step)^2 of the critical point (quadratic convergence), and a breakpoint error e changes
+ * p there only by p'' e^2 / 2, far below the touching tolerances. */
+#define POLY_FAST_STEP_LOW 1e-7
 /* An extremum of p crossing zero by less than this x sum |c_k| |x|^k (a bound of Horner's rounding
  * error at degree 8, 2n eps, doubled) is one double root: the sign of p there is noise. */
 #define POLY_FAST_SNAP (32.0 * POLY_EPS)
@@ -328,44 +364,53 @@ static double poly_eval_d1s(const double *c, int degree, double x, double *d1, d
 }
 
 /* A bisection point of (a, b): geometric when both ends have one sign and differ by a large ratio
- * (roots spread over decades), 0 when the interval straddles it widely, else the midpoint. */
-static double poly_mid(double a, double b)
+ * (roots spread over decades), with an end at or inside +-L (L > 0 a lower bound of the root
+ * moduli of p, a scale for the derivatives) replaced by +-L; 0 when the interval straddles it
+ * widely; else the midpoint. Always strictly inside (a, b) for a < b not adjacent doubles. */
+static double poly_mid(double a, double b, double L)
 {
-    if (a > 0.0 && b > 16.0 * a) return sqrt(a) * sqrt(b);
-    if (b < 0.0 && a < 16.0 * b) return -(sqrt(-a) * sqrt(-b));
-    if (a < 0.0 && b > 0.0 && (b > -16.0 * a || a < -16.0 * b)) return 0.0;
+    if (a >= 0.0) {
+        const double lo = a > L ? a : L;
+        if (b > 16.0 * lo) return sqrt(lo) * sqrt(b);
+    } else if (b <= 0.0) {
+        const double hi = -b > L ? -b : L;
+        if (-a > 16.0 * hi) return -(sqrt(hi) * sqrt(-a));
+    } else if (b > -16.0 * a || a < -16.0 * b) {
+        return 0.0;
+    }
     return 0.5 * a + 0.5 * b;
 }
 
 /* The root of q (degree d) in the open interval (lo, hi) where q is monotone and q(lo) q(hi) < 0
- * (flo = q(lo)), from the start x0 (ignored unless inside): Newton, replaced by bisection whenever
+ * (only the sign of flo = q(lo) is used), from the start x0 (ignored unless inside): Newton, replaced by bisection whenever
  * its step leaves the bracket or fails to halve the step before last (rtsafe-style). Stops after one
  * more Newton step once |q| is within the rounding bound 2 d eps sum |c_k| |x|^k (the bound is
  * pessimistic; the last step recovers the digits it would cost), or when the step is at the last
- * bits. Returns 0 when
+ * bits (|step| <= steptol |x|). Returns 0 when
  * the cap is hit or a value is not finite. */
-static int poly_bracket(const double *q, int d, double lo, double flo, double hi, double x0, double *root)
+static int poly_bracket(const double *q, int d, double lo, double flo, double hi, double x0, double steptol, double L,
+                        double *root)
 {
     double xn = lo, xp = hi; /* q(xn) < 0 < q(xp) */
     if (flo > 0.0) xn = hi, xp = lo;
-    double x = x0 > lo && x0 < hi ? x0 : poly_mid(lo, hi), df, s, f = poly_eval_d1s(q, d, x, &df, &s);
+    double x = x0 > lo && x0 < hi ? x0 : poly_mid(lo, hi, L), df, s, f = poly_eval_d1s(q, d, x, &df, &s);
     double step = hi - lo, step_old = step;
     const double noise = 2.0 * d * POLY_EPS;
     for (int it = 0;; ++it) {
         if (!isfinite(f) || it == POLY_FAST_MAXIT) return 0;
         if (f < 0.0) xn = x;
         else xp = x;
-        const double a = fmin(xn, xp), b = fmax(xn, xp);
+        const double a = xn < xp ? xn : xp, b = xn < xp ? xp : xn; /* not fmin/fmax: libm calls */
         double nx = x - f / df;
         if (fabs(f) <= noise * s) { /* at the rounding level: one last Newton step, if it stays inside */
             if (nx > a && nx < b) x = nx;
             break;
         }
-        if (!(nx > a && nx < b) || !(fabs(f) <= 0.5 * fabs(step_old * df))) nx = poly_mid(a, b);
+        if (!(nx > a && nx < b) || !(fabs(f) <= 0.5 * fabs(step_old * df))) nx = poly_mid(a, b, L);
         step_old = step;
         step = nx - x;
         x = nx;
-        if (fabs(step) <= 4.0 * POLY_EPS * fabs(x) || x == a || x == b) break;
+        if (fabs(step) <= steptol * fabs(x) || x == a || x == b) break;
         f = poly_eval_d1s(q, d, x, &df, &s);
     }
     *root = x;
@@ -399,15 +444,15 @@ static double poly_taylor_start(double x, double v, double half_d2, int dir)
 }
 
 /* Real roots of q (degree d >= 1) given the sorted breakpoints brk[0..nb-1] (the real roots of q',
- * possibly with extras) and the bound B: one bracketed solve per monotone piece with a sign change.
+ * possibly with extras), the bound B and the bisection scale L: one bracketed solve per monotone piece with a sign change.
  * A breakpoint is itself a root when q vanishes there exactly, or when it is an extremum (both
  * neighbours of one sign) with |q| <= tol x sum |c_k| |x|^k, tol = touch if it does not cross zero
  * (the touching case: a complex pair with a tiny imaginary part) and tol = snap if it does (the sign
  * of q there is rounding noise: one double root, not a noise-split pair). A breakpoint root counts
  * as a zero of q, so the pieces beside it hold no other root.
  * Writes the roots in increasing order and returns their number, -1 on trouble. */
-static int poly_level(const double *q, int d, const double *brk, int nb, double B, double touch, double snap,
-                      double *out)
+static int poly_level(const double *q, int d, const double *brk, int nb, double B, double L, double touch,
+                      double snap, double steptol, double *out)
 {
     double val[PROX_POLY_MAX_DEGREE], scl[PROX_POLY_MAX_DEGREE], h2[PROX_POLY_MAX_DEGREE];
     int sg[PROX_POLY_MAX_DEGREE + 2], at[PROX_POLY_MAX_DEGREE]; /* signs at -inf, breakpoints, +inf */
@@ -430,14 +475,9 @@ static int poly_level(const double *q, int d, const double *brk, int nb, double 
     for (int i = 0; i <= nb; ++i) {
         /* the piece (left, right) between breakpoints i-1 and i */
         if (sg[i] * sg[i + 1] < 0) {
-            double left = i > 0 ? brk[i - 1] : -B, right = i < nb ? brk[i] : B, fl, x0;
-            if (i == 0) { /* the outer pieces need the value at the bound */
-                fl = prox_poly_eval(q, d, left, NULL);
-                if (poly_sign(fl) != sg[0]) return -1;
-            } else {
-                fl = val[i - 1];
-            }
-            if (i == nb && poly_sign(prox_poly_eval(q, d, right, NULL)) != sg[nb + 1]) return -1;
+            /* beyond the bound q has the sign of its leading term: no evaluation needed there */
+            double left = i > 0 ? brk[i - 1] : -B, right = i < nb ? brk[i] : B, x0;
+            const double fl = i > 0 ? val[i - 1] : sg[0];
             if (!(left < right)) return -1;
             /* start from the Taylor quadratic of the breakpoint end where |q| is smaller */
             if (i > 0 && (i == nb || fabs(val[i - 1]) <= fabs(val[i])))
@@ -446,7 +486,7 @@ static int poly_level(const double *q, int d, const double *brk, int nb, double 
                 x0 = poly_taylor_start(right, val[i], h2[i], -1);
             else
                 x0 = NAN;
-            if (!poly_bracket(q, d, left, fl, right, x0, &out[m])) return -1;
+            if (!poly_bracket(q, d, left, fl, right, x0, steptol, L, &out[m])) return -1;
             ++m;
         }
         if (i < nb && at[i]) out[m++] = brk[i];
@@ -454,18 +494,64 @@ static int poly_level(const double *q, int d, const double *brk, int nb, double 
     return m;
 }
 
-/* Power-of-two Fujiwara-type bound on the moduli of all roots of w[0..n] (w[n] != 0):
- * 2 max_k |w_k / w_n|^(1/(n-k)), each term rounded up to a power of two, times 2 for margin. */
-static double poly_root_bound(const double *w, int n)
+/* Power-of-two Fujiwara-type bound on the moduli of all roots of w[0..n] (w[n] != 0), walking the
+ * coefficients in direction dir (+1: upper bound of the roots of w; -1 with w pointing at the last
+ * coefficient: upper bound of the reciprocal roots): 2 max_k |w_k / w_n|^(1/(n-k)), each term
+ * rounded up to a power of two, times 2 for margin. Returns the binary exponent. */
+static int poly_bound_exp(const double *w, int n, int dir)
 {
     int e = -1074;
+    const int en = ilogb(w[dir * n]);
     for (int k = 0; k < n; ++k) {
-        if (w[k] == 0.0) continue;
-        int ek = ilogb(w[k]) - ilogb(w[n]) + 2; /* |w_k / w_n| < 2^ek */
+        if (w[dir * k] == 0.0) continue;
+        int ek = ilogb(w[dir * k]) - en + 2; /* |w_k / w_n| < 2^ek */
         int r = ek >= 0 ? (ek + (n - k) - 1) / (n - k) : -((-ek) / (n - k));
         if (r > e) e = r;
     }
-    return ldexp(1.0, e + 2);
+    return e + 2;
+}
+
+/* Ends of the noise zone of a root cluster. Where several roots of p coalesce to within rounding
+ * (a triple or higher root, or a double root of a large polynomial), the derivative chain reports
+ * one root x, but the roots of the stored polynomial may lie anywhere in the zone around x where
+ * |p| <= T = 32 eps sum |c_k| |x|^k, and QR reports points spread over it. Callers that polish on
+ * another form (circle_circle) need starts across the zone, so its two ends are reported too: in
+ * the monotone pieces beside x (between the neighbouring breakpoints brk[], or +-B), the roots of
+ * p -+ T, when the zone is wider than 1e-6 relative (estimated as T / |p'(x)|). Edges are added in
+ * order while the count stays <= 8; returns the new count. */
+static int poly_cluster_edges(const double *q, int d, const double *brk, int nb, double B, double L, double *r,
+                              int m)
+{
+    double extra[2 * PROX_POLY_MAX_DEGREE];
+    int ne = 0;
+    for (int i = 0; i < m; ++i) {
+        const double x = r[i], width = 1e-6 * fmax(fabs(x), L);
+        double dp, s, px = poly_eval_d1s(q, d, x, &dp, &s);
+        const double T = POLY_FAST_SNAP * s;
+        if (!(fabs(px) <= T) || fabs(dp) * width >= T) continue; /* not a cluster or too narrow */
+        double a = -B, b = B;
+        for (int k = 0; k < nb; ++k) {
+            if (brk[k] < x) a = brk[k];
+            if (brk[k] > x && b == B) b = brk[k];
+        }
+        for (int side = -1; side <= 1; side += 2) {
+            const double end = side < 0 ? a : b, fe = prox_poly_eval(q, d, end, NULL);
+            if (!(fabs(fe) > T)) continue; /* the zone reaches past the piece */
+            double qs[PROX_POLY_MAX_DEGREE + 1], e;
+            for (int k = 0; k <= d; ++k) qs[k] = q[k];
+            qs[0] -= copysign(T, fe); /* p - T sign(p(end)): changes sign between x and end */
+            const double lo = side < 0 ? end : x, hi = side < 0 ? x : end;
+            const double flo = side < 0 ? fe : px - copysign(T, fe);
+            if (!(lo < hi) || !poly_bracket(qs, d, lo, flo, hi, NAN, 4.0 * POLY_EPS, L, &e)) continue;
+            if (fabs(e - x) > width && ne < 2 * PROX_POLY_MAX_DEGREE) extra[ne++] = e;
+        }
+    }
+    for (int k = 0; k < ne && m < PROX_POLY_MAX_DEGREE; ++k) { /* insert in order */
+        int j = m++;
+        for (; j > 0 && r[j - 1] > extra[k]; --j) r[j] = r[j - 1];
+        r[j] = extra[k];
+    }
+    return m;
 }
 
 /* Real roots of w[0..n] (5 <= n <= 8, w[n] != 0) by the derivative chain, polished on full[0..deg]
@@ -475,8 +561,11 @@ static int poly_fast_roots(const double *w, int n, const double *full, int deg, 
     static const double binom[PROX_POLY_MAX_DEGREE + 1][PROX_POLY_MAX_DEGREE + 1] = {
         {1}, {1, 1}, {1, 2, 1}, {1, 3, 3, 1}, {1, 4, 6, 4, 1}, {1, 5, 10, 10, 5, 1},
         {1, 6, 15, 20, 15, 6, 1}, {1, 7, 21, 35, 35, 21, 7, 1}, {1, 8, 28, 56, 70, 56, 28, 8, 1}};
-    const double B = poly_root_bound(w, n);
-    if (!isfinite(B)) return -1;
+    const double B = ldexp(1.0, poly_bound_exp(w, n, 1));
+    int k0 = 0; /* p = x^k0 r(x), r(0) != 0: the nonzero roots are at least L in modulus */
+    while (w[k0] == 0.0) ++k0;
+    const double L = k0 < n ? ldexp(1.0, -poly_bound_exp(w + n, n - k0, -1)) : 1.0;
+    if (!isfinite(B) || !(L > 0.0)) return -1;
     double q[PROX_POLY_MAX_DEGREE + 1], brk[PROX_POLY_MAX_DEGREE], cur[PROX_POLY_MAX_DEGREE];
     /* q_{n-1} = p^(n-1) / (n-1)!: linear */
     brk[0] = -(binom[n - 1][n - 1] * w[n - 1]) / (binom[n][n - 1] * w[n]);
@@ -484,9 +573,10 @@ static int poly_fast_roots(const double *w, int n, const double *full, int deg, 
     for (int j = n - 2; j >= 0; --j) {
         const int d = n - j;
         for (int k = 0; k <= d; ++k) q[k] = binom[k + j][j] * w[k + j]; /* q_j = p^(j) / j! */
-        int m = j > 0 ? poly_level(q, d, brk, nb, B, POLY_FAST_TOUCH_LOW, 0.0, cur)
-                      : poly_level(q, d, brk, nb, B, POLY_DOUBLE_REL, POLY_FAST_SNAP, cur);
+        int m = j > 0 ? poly_level(q, d, brk, nb, B, L, POLY_FAST_TOUCH_LOW, 0.0, POLY_FAST_STEP_LOW, cur)
+                      : poly_level(q, d, brk, nb, B, L, POLY_DOUBLE_REL, POLY_FAST_SNAP, 4.0 * POLY_EPS, cur);
         if (m < 0) return -1;
+        if (j == 0) m = poly_cluster_edges(q, d, brk, nb, B, L, cur, m);
         for (int i = 0; i < m; ++i) brk[i] = cur[i];
         nb = m;
     }
@@ -502,6 +592,7 @@ static int poly_fast_roots(const double *w, int n, const double *full, int deg, 
                 double t = roots[k];
                 roots[k] = roots[k - 1], roots[k - 1] = t;
             }
+        nb = poly_drop_artifacts(full, deg, roots, nb);
     } else {
         for (int i = 0; i < nb; ++i) roots[i] = brk[i];
     }
@@ -514,13 +605,6 @@ prox_status prox_poly_real_roots(const double *c, int degree, double *roots, int
     int n;
     prox_status st = poly_prepare(c, degree, roots, count, w, &n);
     if (st != PROX_OK || n == 0) return st;
-    if (n >= 5) { /* derivative chain; QR only when it reports trouble */
-        int m = poly_fast_roots(w, n, w, degree, roots);
-        if (m >= 0) {
-            *count = m;
-            return PROX_OK;
-        }
-    }
     poly_cand z[PROX_POLY_MAX_DEGREE];
     int closed = 0;
     if (n <= 4) {
@@ -530,6 +614,22 @@ prox_status prox_poly_real_roots(const double *c, int degree, double *roots, int
     if (!closed && (st = poly_gsl_roots(w, n, z)) != PROX_OK) return st;
     poly_finish(w, degree, z, n, roots, count);
     return PROX_OK;
+}
+
+prox_status prox_poly_real_roots_fast(const double *c, int degree, double *roots, int *count)
+{
+    double w[PROX_POLY_MAX_DEGREE + 1];
+    int n;
+    prox_status st = poly_prepare(c, degree, roots, count, w, &n);
+    if (st != PROX_OK || n == 0) return st;
+    if (n >= 5) { /* derivative chain; QR only when it reports trouble */
+        int m = poly_fast_roots(w, n, w, degree, roots);
+        if (m >= 0) {
+            *count = m;
+            return PROX_OK;
+        }
+    }
+    return prox_poly_real_roots(c, degree, roots, count);
 }
 
 prox_status prox_poly_real_roots_gsl(const double *c, int degree, double *roots, int *count)
