@@ -3,6 +3,7 @@
  * moderate size (|coordinates| <= 1e100) get PROX_OK and finite answers; invalid ones a named error.
  * Byte layout: 1 byte selects the pair kinds, then raw IEEE doubles (missing bytes read as zero). */
 #include <stdint.h>
+#include <gsl/gsl_errno.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -20,6 +21,16 @@
     } while (0)
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+int LLVMFuzzerInitialize(int *argc, char ***argv);
+
+/* Like the prox tool, tests and bench: GSL's default handler aborts, prox reports statuses. */
+int LLVMFuzzerInitialize(int *argc, char ***argv)
+{
+    (void)argc;
+    (void)argv;
+    gsl_set_error_handler_off();
+    return 0;
+}
 
 /* Reads the k-th double of the payload (zero beyond the end). */
 static double get(const uint8_t *p, size_t n, size_t k)
