@@ -205,21 +205,41 @@ static int cc_axis_points(const cc_prob *p, double ax[2])
     return 2;
 }
 
+/* The problem with circle a's frame turned by a quarter turn: angles th' = th - pi/2. */
+static cc_prob cc_quarter_turn(const cc_prob *p)
+{
+    cc_prob q = *p;
+    q.cx = p->cy, q.cy = -p->cx;
+    q.nx = p->ny, q.ny = -p->nx;
+    q.kx = p->ky, q.ky = -p->kx;
+    return q;
+}
+
+/* Starting angles from the real roots of the degree-8 polynomial of p, shifted by `turn`. The
+ * half-angle substitution represents angles near pi badly (t -> infinity, coefficients dominated by
+ * rounding), so callers solve in two frames a quarter turn apart: every angle is then far from pi in
+ * one of them. A root-finder failure leaves the grid starts of the caller to do the work. */
+static int cc_starts(const cc_prob *p, double turn, double *starts)
+{
+    double F[9], roots[8];
+    int nr = 0;
+    cc_poly(p, F);
+    if (prox_poly_real_roots_fast(F, 8, roots, &nr) != PROX_OK) return 0;
+    for (int i = 0; i < nr; ++i) starts[i] = 2.0 * atan(roots[i]) + turn;
+    return nr;
+}
+
 int prox_circle_circle_stationary(const prox_fcircle *a, const prox_fcircle *b, double th[8], int *count)
 {
     *count = 0;
     cc_prob p = cc_make(a, b);
     double cxy = prox_hypot2(p.cx, p.cy), nxy = prox_hypot2(p.nx, p.ny);
     if (nxy <= CC_COAXIAL_TOL && cxy <= CC_COAXIAL_TOL * p.scale) return 1; /* g is constant */
-    double F[9], roots[8];
-    int nr = 0;
-    cc_poly(&p, F);
-    prox_status st = prox_poly_real_roots(F, 8, roots, &nr);
-    if (st != PROX_OK) return -(int)st;
-    double starts[12];
-    int ns = 0;
-    for (int i = 0; i < nr; ++i) starts[ns++] = 2.0 * atan(roots[i]);
-    for (int k = 0; k < 4; ++k) starts[ns++] = 0.5 * PROX_PI * k; /* th = pi is t = infinity */
+    double starts[24];
+    int ns = cc_starts(&p, 0.0, starts);
+    cc_prob q = cc_quarter_turn(&p);
+    ns += cc_starts(&q, 0.5 * PROX_PI, starts + ns);
+    for (int k = 0; k < 8; ++k) starts[ns++] = 0.25 * PROX_PI * k; /* grid: safety net */
     double gs[8];
     const double tol = CC_STAT_TOL * p.scale;
     for (int i = 0; i < ns; ++i) {
