@@ -43,12 +43,35 @@ static void test_fuzz_sat_range(void **state)
     assert_int_equal(prox_rcc_distance(&a, &b).status, PROX_EINVAL_RANGE);
 }
 
+/* fuzz_queries crash-b3b3b7fc: a needle (r 9.4e-97, length 9.3e61) through a disk of radius 5.8e63 and
+ * thickness 9.4e-96, valid shapes: the degree-8 root solve failed and its PROX_ENUMERIC reached the
+ * caller. circle_circle now falls back on grid starts, so a valid pair always gets an answer. */
+static void test_fuzz_extreme_needle_disk(void **state)
+{
+    (void)state;
+    prox_rcc a = {prox_v3(0, -2.3534379293677286e-185, -2.3534382803483239e-185),
+                  prox_v3(-2.3534389818985507e-185, -9.2559653443892704e+61, -9.0731789714004204e-231),
+                  9.3644955991449635e-97};
+    prox_rcc b = {prox_v3(6.578852546238169e-96, -9.0543081646718321e+61, -9.0731789714004204e-231),
+                  prox_v3(9.3644955992812182e-97, 6.5947378647064525e-96, 6.5947378298252455e-96),
+                  5.7592664921780962e+63};
+    assert_int_equal(prox_rcc_validate(&a), PROX_OK);
+    assert_int_equal(prox_rcc_validate(&b), PROX_OK);
+    prox_rcc_result r = prox_rcc_distance(&a, &b);
+    assert_int_equal(r.status, PROX_OK);
+    assert_true(isfinite(r.distance) && prox_v3_isfinite(r.p1) && prox_v3_isfinite(r.p2));
+    prox_signed_result g = prox_rcc_signed_distance(&a, &b);
+    assert_int_equal(g.status, PROX_OK);
+    assert_true(isfinite(g.sd));
+}
+
 int main(void)
 {
     test_init();
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_fuzz_subnormal_rpp_sph),
         cmocka_unit_test(test_fuzz_sat_range),
+        cmocka_unit_test(test_fuzz_extreme_needle_disk),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
