@@ -1,24 +1,11 @@
 /* libFuzzer harness for MCNP deck text (src/scene/deck.c, prox_deck_parse): any bytes, made
  * NUL-terminated, are parsed; no crash, leak or hang, and every body produced is a valid shape
  * (errors are reported as notes, never as invalid bodies). */
-#include <stdint.h>
-#include <gsl/gsl_errno.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "prox/deck.h"
-
-int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
-int LLVMFuzzerInitialize(int *argc, char ***argv);
-
-/* Like the prox tool, tests and bench: GSL's default handler aborts, prox reports statuses. */
-int LLVMFuzzerInitialize(int *argc, char ***argv)
-{
-    (void)argc;
-    (void)argv;
-    gsl_set_error_handler_off();
-    return 0;
-}
+#include "fuzz_common.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

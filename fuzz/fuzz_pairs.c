@@ -3,25 +3,12 @@
  * (distance, --signed, --test); run.sh passes -close_fd_mask=3 to silence its output. Contract: no crash, no leak, exit status
  * 0 or 1 (2 only for usage errors, never for data). */
 #define _POSIX_C_SOURCE 200809L
-#include <stdint.h>
-#include <gsl/gsl_errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <unistd.h>
 
 #include "cli/cli.h"
-
-int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
-int LLVMFuzzerInitialize(int *argc, char ***argv);
-
-/* Like the prox tool, tests and bench: GSL's default handler aborts, prox reports statuses. */
-int LLVMFuzzerInitialize(int *argc, char ***argv)
-{
-    (void)argc;
-    (void)argv;
-    gsl_set_error_handler_off();
-    return 0;
-}
+#include "fuzz_common.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {

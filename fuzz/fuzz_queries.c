@@ -2,14 +2,13 @@
  * query. Contract checked: no crash or hang; an OK status never comes with a NaN; valid shapes of
  * moderate size (|coordinates| <= 1e100) get PROX_OK and finite answers; invalid ones a named error.
  * Byte layout: 1 byte selects the pair kinds, then raw IEEE doubles (missing bytes read as zero). */
-#include <stdint.h>
-#include <gsl/gsl_errno.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "prox/prox.h"
 #include "prox/query.h"
 #include "prox/sat.h"
+#include "fuzz_common.h"
 
 /* A broken contract prints the condition and its line (so a crash file explains itself), then traps. */
 #define CHECK(c)                                                                     \
@@ -19,18 +18,6 @@
             __builtin_trap();                                                        \
         }                                                                            \
     } while (0)
-
-int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
-int LLVMFuzzerInitialize(int *argc, char ***argv);
-
-/* Like the prox tool, tests and bench: GSL's default handler aborts, prox reports statuses. */
-int LLVMFuzzerInitialize(int *argc, char ***argv)
-{
-    (void)argc;
-    (void)argv;
-    gsl_set_error_handler_off();
-    return 0;
-}
 
 /* Reads the k-th double of the payload (zero beyond the end). */
 static double get(const uint8_t *p, size_t n, size_t k)
