@@ -67,8 +67,7 @@ static double bb_scale(const prox_bframe *A, const prox_bframe *B)
 PROX_API prox_test_result prox_box_box_test(const prox_box *a, const prox_box *b)
 {
     prox_test_result r = {0};
-    r.status = prox_box_validate(a);
-    if (r.status == PROX_OK) r.status = prox_box_validate(b);
+    r.status = prox_valid2(prox_box_validate(a), prox_box_validate(b));
     if (r.status != PROX_OK) return r;
     prox_bframe A = prox_bframe_make(a), B = prox_bframe_make(b);
     int i = 0;
@@ -123,8 +122,7 @@ static int common_point(const prox_bframe *A, const prox_bframe *B, double tol, 
 PROX_API prox_distance_result prox_box_box_distance(const prox_box *a, const prox_box *b)
 {
     prox_distance_result r = {0};
-    r.status = prox_box_validate(a);
-    if (r.status == PROX_OK) r.status = prox_box_validate(b);
+    r.status = prox_valid2(prox_box_validate(a), prox_box_validate(b));
     if (r.status != PROX_OK) return r;
     prox_bframe A = prox_bframe_make(a), B = prox_bframe_make(b);
     int i = 0;

@@ -19,25 +19,8 @@
 #include "prox/primitives.h"
 #include "prox/support.h"
 
-typedef struct cyl_frame {
-    prox_vec3 base, w, u, v;
-    double h, r;
-} cyl_frame;
-
-static cyl_frame cyl_make(const prox_rcc *c)
-{
-    cyl_frame f;
-    f.base = c->base;
-    f.h = prox_v3_norm(c->axis);
-    f.w = prox_v3_divs(c->axis, f.h);
-    f.u = prox_v3_any_perp(f.w);
-    f.v = prox_v3_cross(f.w, f.u);
-    f.r = c->radius;
-    return f;
-}
-
 /* Clips p + s (q - p), s in [0,1], to the solid cylinder enlarged by tol. */
-static int clip_segment_cyl(const cyl_frame *c, prox_vec3 p, prox_vec3 q, double tol, double *s0, double *s1)
+static int clip_segment_cyl(const prox_cframe *c, prox_vec3 p, prox_vec3 q, double tol, double *s0, double *s1)
 {
     prox_vec3 d = prox_v3_sub(q, p), o = prox_v3_sub(p, c->base);
     double t0 = prox_v3_dot(o, c->w), dt = prox_v3_dot(d, c->w), lo = 0.0, hi = 1.0;
@@ -69,9 +52,9 @@ static int clip_segment_cyl(const cyl_frame *c, prox_vec3 p, prox_vec3 q, double
 }
 
 /* Point of the rim circle (top = 0 base, 1 top) at angle th. */
-static prox_vec3 rim_point(const cyl_frame *c, int top, double th)
+static prox_vec3 rim_point(const prox_cframe *c, int top, double th)
 {
-    prox_vec3 ctr = prox_v3_mad(c->base, top ? c->h : 0.0, c->w);
+    prox_vec3 ctr = prox_cframe_rim_center(c, top);
     return prox_v3_add(ctr, prox_v3_add(prox_v3_scale(c->u, c->r * cos(th)), prox_v3_scale(c->v, c->r * sin(th))));
 }
 
@@ -79,12 +62,12 @@ static prox_vec3 rim_point(const cyl_frame *c, int top, double th)
  * g_k = gamma + alpha cos th + beta sin th holds on arcs; a non-empty intersection of arcs contains
  * one of their end angles (or is the whole circle), so those angles and the midpoints between them
  * are the only candidates to test. */
-static int rim_meets_box(const cyl_frame *c, int top, const prox_bframe *B, double tol, prox_vec3 *x)
+static int rim_meets_box(const prox_cframe *c, int top, const prox_bframe *B, double tol, prox_vec3 *x)
 {
     double cand[32];
     int nc = 0;
     cand[nc++] = 0.0;
-    prox_vec3 ctr = prox_v3_mad(c->base, top ? c->h : 0.0, c->w);
+    prox_vec3 ctr = prox_cframe_rim_center(c, top);
     double g[3], al[3], be[3];
     for (int k = 0; k < 3; ++k) {
         g[k] = prox_v3_dot(prox_v3_sub(ctr, B->m), B->a[k]);
@@ -116,7 +99,7 @@ static int rim_meets_box(const cyl_frame *c, int top, const prox_bframe *B, doub
     return 0;
 }
 
-static double pair_scale(const prox_bframe *B, const cyl_frame *c)
+static double pair_scale(const prox_bframe *B, const prox_cframe *c)
 {
     prox_vec3 cc = prox_v3_mad(c->base, 0.5 * c->h, c->w);
     double s = prox_v3_dist(B->m, cc), v[3] = {prox_bframe_size(B), c->h, 2.0 * c->r};
@@ -125,7 +108,7 @@ static double pair_scale(const prox_bframe *B, const cyl_frame *c)
 }
 
 /* The verdict with a common point when they meet. */
-static int box_rcc_meet(const prox_bframe *B, const cyl_frame *c, double tol, prox_vec3 *x)
+static int box_rcc_meet(const prox_bframe *B, const prox_cframe *c, double tol, prox_vec3 *x)
 {
     double s0, s1;
     for (int j = 0; j < 12; ++j) {
@@ -149,11 +132,10 @@ static int box_rcc_meet(const prox_bframe *B, const cyl_frame *c, double tol, pr
 PROX_API prox_test_result prox_box_rcc_test(const prox_box *a, const prox_rcc *b)
 {
     prox_test_result r = {0};
-    r.status = prox_box_validate(a);
-    if (r.status == PROX_OK) r.status = prox_rcc_validate(b);
+    r.status = prox_valid2(prox_box_validate(a), prox_rcc_validate(b));
     if (r.status != PROX_OK) return r;
     prox_bframe B = prox_bframe_make(a);
-    cyl_frame c = cyl_make(b);
+    prox_cframe c = prox_cframe_make(b);
     prox_vec3 x;
     r.intersect = box_rcc_meet(&B, &c, PROX_QUERY_REL_TOL * pair_scale(&B, &c), &x);
     return r;
@@ -167,7 +149,7 @@ PROX_API prox_test_result prox_box_rcc_test(const prox_box *a, const prox_rcc *b
  * end plane at the same radius and the cap candidate attains the same distance). Conversely a foot in
  * [0, h] outside the surface is the edge's own minimum: dist(x, C) >= dist(x, infinite cylinder), with
  * equality at the foot. */
-static double edge_lateral(const cyl_frame *c, const prox_segment *s, prox_vec3 *x, prox_vec3 *y)
+static double edge_lateral(const prox_cframe *c, const prox_segment *s, prox_vec3 *x, prox_vec3 *y)
 {
     prox_cylsurf S = {c->base, c->w, c->h, c->r};
     prox_prim_result q = prox_segment_cylsurf_inf(s, &S);
@@ -190,9 +172,9 @@ static double point_seg_dist(prox_vec3 x, const prox_segment *s)
  * crossing, endpoints against the disk, the rim by the quartic of prox_circle_segment), skipped when a
  * cheap lower bound (height of the edge above the disk's plane; distance from the disk's centre minus r)
  * already reaches `best`. */
-static double edge_cap(const cyl_frame *c, int top, const prox_segment *s, double best, prox_vec3 *x, prox_vec3 *y)
+static double edge_cap(const prox_cframe *c, int top, const prox_segment *s, double best, prox_vec3 *x, prox_vec3 *y)
 {
-    prox_vec3 ctr = prox_v3_mad(c->base, top ? c->h : 0.0, c->w);
+    prox_vec3 ctr = prox_cframe_rim_center(c, top);
     double ha = prox_v3_dot(prox_v3_sub(s->a, ctr), c->w), hb = prox_v3_dot(prox_v3_sub(s->b, ctr), c->w);
     double lb = (ha > 0.0) == (hb > 0.0) && ha != 0.0 && hb != 0.0 ? fmin(fabs(ha), fabs(hb)) : 0.0;
     lb = fmax(lb, point_seg_dist(ctr, s) - c->r);
@@ -208,7 +190,7 @@ static double edge_cap(const cyl_frame *c, int top, const prox_segment *s, doubl
 /* The 12 edges against the solid cylinder, nearest first by the capsule lower bound
  * dist(edge, axis segment) - r (the cylinder lies in that capsule), stopping when the bound reaches the
  * best distance found; each edge against the lateral surface and both end disks. */
-static void edges_cyl(const prox_bframe *B, const cyl_frame *c, double *best, prox_vec3 *p1, prox_vec3 *p2)
+static void edges_cyl(const prox_bframe *B, const prox_cframe *c, double *best, prox_vec3 *p1, prox_vec3 *p2)
 {
     prox_segment e[12];
     double lb[12];
@@ -239,10 +221,10 @@ static void edges_cyl(const prox_bframe *B, const cyl_frame *c, double *best, pr
 
 /* Rim circle against the interior of the box face with outward normal sgn a_k: the circle's lowest
  * point along the normal, when it projects into the face and lies above it. */
-static double rim_face(const cyl_frame *c, int top, const prox_bframe *B, int k, int sgn, prox_vec3 *x, prox_vec3 *y)
+static double rim_face(const prox_cframe *c, int top, const prox_bframe *B, int k, int sgn, prox_vec3 *x, prox_vec3 *y)
 {
     prox_vec3 nf = prox_v3_scale(B->a[k], (double)sgn);
-    prox_vec3 ctr = prox_v3_mad(c->base, top ? c->h : 0.0, c->w);
+    prox_vec3 ctr = prox_cframe_rim_center(c, top);
     prox_vec3 rj = prox_v3_reject(nf, c->w);
     double rn = prox_v3_norm(rj);
     prox_vec3 dir;
@@ -267,11 +249,10 @@ static double rim_face(const cyl_frame *c, int top, const prox_bframe *B, int k,
 PROX_API prox_distance_result prox_box_rcc_distance(const prox_box *a, const prox_rcc *b)
 {
     prox_distance_result r = {0};
-    r.status = prox_box_validate(a);
-    if (r.status == PROX_OK) r.status = prox_rcc_validate(b);
+    r.status = prox_valid2(prox_box_validate(a), prox_rcc_validate(b));
     if (r.status != PROX_OK) return r;
     prox_bframe B = prox_bframe_make(a);
-    cyl_frame c = cyl_make(b);
+    prox_cframe c = prox_cframe_make(b);
     prox_vec3 x, y;
     if (box_rcc_meet(&B, &c, PROX_QUERY_REL_TOL * pair_scale(&B, &c), &x)) {
         r.intersect = 1;

@@ -9,25 +9,19 @@
 PROX_API prox_signed_result prox_box_sph_signed_distance(const prox_box *a, const prox_sph *b)
 {
     prox_signed_result r = {0};
-    r.status = prox_box_validate(a);
-    if (r.status == PROX_OK) r.status = prox_sph_validate(b);
+    r.status = prox_valid2(prox_box_validate(a), prox_sph_validate(b));
     if (r.status != PROX_OK) return r;
     prox_bframe f = prox_bframe_make(a);
     prox_vec3 q, n;
     double sdp = prox_bframe_signed(&f, b->center, &q, &n);
     if (!(prox_v3_norm2(n) > 0.0)) n = f.a[2]; /* centre on the surface: a face normal is valid */
-    r.sd = sdp - b->radius;
-    r.normal = n;
-    r.p1 = q;
-    r.p2 = prox_v3_mad(b->center, -b->radius, n);
-    return r;
+    return prox_sph_signed_from_point(sdp, q, n, b);
 }
 
 PROX_API prox_distance_result prox_box_sph_distance(const prox_box *a, const prox_sph *b)
 {
     prox_distance_result r = {0};
-    r.status = prox_box_validate(a);
-    if (r.status == PROX_OK) r.status = prox_sph_validate(b);
+    r.status = prox_valid2(prox_box_validate(a), prox_sph_validate(b));
     if (r.status != PROX_OK) return r;
     prox_bframe f = prox_bframe_make(a);
     double d;
@@ -39,9 +33,5 @@ PROX_API prox_distance_result prox_box_sph_distance(const prox_box *a, const pro
         return r;
     }
     prox_vec3 n = prox_v3_divs(prox_v3_sub(b->center, q), d);
-    r.distance = d - b->radius;
-    r.p1 = q;
-    r.p2 = prox_v3_mad(b->center, -b->radius, n);
-    r.certificate_gap = (prox_v3_dot(n, b->center) - b->radius) - prox_bframe_support(&f, n);
-    return r;
+    return prox_sph_distance_from_point(d, q, n, b, prox_bframe_support(&f, n));
 }

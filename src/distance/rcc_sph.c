@@ -44,23 +44,17 @@ double prox_rcc_point_signed(const prox_rcc *c, prox_vec3 x, prox_vec3 *q, prox_
 PROX_API prox_signed_result prox_rcc_sph_signed_distance(const prox_rcc *a, const prox_sph *b)
 {
     prox_signed_result r = {0};
-    r.status = prox_rcc_validate(a);
-    if (r.status == PROX_OK) r.status = prox_sph_validate(b);
+    r.status = prox_valid2(prox_rcc_validate(a), prox_sph_validate(b));
     if (r.status != PROX_OK) return r;
     prox_vec3 q, n;
     double sdp = prox_rcc_point_signed(a, b->center, &q, &n);
-    r.sd = sdp - b->radius;
-    r.normal = n;
-    r.p1 = q;
-    r.p2 = prox_v3_mad(b->center, -b->radius, n);
-    return r;
+    return prox_sph_signed_from_point(sdp, q, n, b);
 }
 
 PROX_API prox_distance_result prox_rcc_sph_distance(const prox_rcc *a, const prox_sph *b)
 {
     prox_distance_result r = {0};
-    r.status = prox_rcc_validate(a);
-    if (r.status == PROX_OK) r.status = prox_sph_validate(b);
+    r.status = prox_valid2(prox_rcc_validate(a), prox_sph_validate(b));
     if (r.status != PROX_OK) return r;
     prox_vec3 q, n;
     double sdp = prox_rcc_point_signed(a, b->center, &q, &n);
@@ -72,9 +66,5 @@ PROX_API prox_distance_result prox_rcc_sph_distance(const prox_rcc *a, const pro
         r.p1 = r.p2 = sdp <= 0.0 ? b->center : q;
         return r;
     }
-    r.distance = sdp - b->radius;
-    r.p1 = q;
-    r.p2 = prox_v3_mad(b->center, -b->radius, n);
-    r.certificate_gap = (prox_v3_dot(n, b->center) - b->radius) - prox_rcc_support(a, n);
-    return r;
+    return prox_sph_distance_from_point(sdp, q, n, b, prox_rcc_support(a, n));
 }

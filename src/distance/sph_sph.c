@@ -14,8 +14,7 @@ static prox_vec3 centre_dir(prox_vec3 a, prox_vec3 b, double *d)
 PROX_API prox_signed_result prox_sph_sph_signed_distance(const prox_sph *a, const prox_sph *b)
 {
     prox_signed_result r = {0};
-    r.status = prox_sph_validate(a);
-    if (r.status == PROX_OK) r.status = prox_sph_validate(b);
+    r.status = prox_valid2(prox_sph_validate(a), prox_sph_validate(b));
     if (r.status != PROX_OK) return r;
     double d;
     r.normal = centre_dir(a->center, b->center, &d);
