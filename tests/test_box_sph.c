@@ -5,24 +5,14 @@
  * Hand-made cases: sphere touching an edge, touching a corner, inside the box, through a face (the last
  * two missed by the TRX report's edge-line test, LA-UR-13-26757 Sec. 3.3 / Fig. 9), box inside the
  * sphere, and the report's own edge-line figure (an edge line cutting the sphere). */
-#include "test_util.h"
-#include "prox/query.h"
-
-typedef long double ld;
-typedef struct lv {
-    ld x, y, z;
-} lv;
-static lv L3(prox_vec3 v) { lv r = {v.x, v.y, v.z}; return r; }
-static lv lsub(lv a, lv b) { lv r = {a.x - b.x, a.y - b.y, a.z - b.z}; return r; }
-static lv lmad(lv a, ld s, lv b) { lv r = {a.x + s * b.x, a.y + s * b.y, a.z + s * b.z}; return r; }
-static ld ldot(lv a, lv b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static ld lnorm(lv a) { return sqrtl(ldot(a, a)); }
+#include "test_brute_shapes.h"
 
 /* Brute force: signed distance of x to the box (negative inside) and the nearest boundary point q.
  * Face f of 6: the corner (or corner + edge k) and the two other edges spanning it. */
-static ld brute_signed(const prox_box *b, lv x, lv *q)
+static ld brute_signed(const void *solid, lv3 x, lv3 *q)
 {
-    lv c0 = L3(b->corner), e[3] = {L3(b->edge[0]), L3(b->edge[1]), L3(b->edge[2])};
+    const prox_box *b = solid;
+    lv3 c0 = L(b->corner), e[3] = {L(b->edge[0]), L(b->edge[1]), L(b->edge[2])};
     int inside = 1;
     for (int k = 0; k < 3; ++k) {
         ld t = ldot(lsub(x, c0), e[k]) / ldot(e[k], e[k]);
@@ -31,13 +21,13 @@ static ld brute_signed(const prox_box *b, lv x, lv *q)
     ld best = INFINITY;
     for (int f = 0; f < 6; ++f) {
         int k = f / 2, i = (k + 1) % 3, j = (k + 2) % 3;
-        lv o = (f & 1) ? lmad(c0, 1, e[k]) : c0;
+        lv3 o = (f & 1) ? lmad(c0, 1, e[k]) : c0;
         ld s = ldot(lsub(x, o), e[i]) / ldot(e[i], e[i]), t = ldot(lsub(x, o), e[j]) / ldot(e[j], e[j]);
         if (!inside) { /* clamp onto the face rectangle */
             s = s < 0 ? 0 : (s > 1 ? 1 : s);
             t = t < 0 ? 0 : (t > 1 ? 1 : t);
         }
-        lv p = lmad(lmad(o, s, e[i]), t, e[j]);
+        lv3 p = lmad(lmad(o, s, e[i]), t, e[j]);
         ld d = lnorm(lsub(x, p));
         if (d < best) best = d, *q = p;
     }
@@ -53,52 +43,14 @@ static prox_box rand_box(test_rng *g, prox_vec3 c, double lo, double hi)
     return b;
 }
 
-static double pair_scale(const prox_box *b, const prox_sph *s)
-{
-    prox_shape A = prox_shape_from_box(*b), B = prox_shape_from_sph(*s);
-    return prox_shape_pair_scale(&A, &B);
-}
-
 /* Checks one pair against the brute force: distance, points and certificate when disjoint, common
  * point when not; signed distance and its witnesses; repositioning to a margin. */
 static void check_pair(const prox_box *b, const prox_sph *s, int *n_dis, int *n_ov)
 {
-    double S = pair_scale(b, s), tol = 1e-12 * S;
-    lv q;
-    ld sdp = brute_signed(b, L3(s->center), &q), sd = sdp - s->radius;
-    prox_distance_result d = prox_box_sph_distance(b, s);
-    assert_int_equal(d.status, PROX_OK);
-    lv tmp;
-    if (sd > tol) {
-        ++*n_dis;
-        assert_false(d.intersect);
-        assert_near(d.distance, (double)sd, tol);
-        assert_near(prox_v3_dist(d.p1, d.p2), d.distance, tol);
-        assert_true(brute_signed(b, L3(d.p1), &tmp) <= tol);                          /* p1 in the box */
-        assert_near(prox_v3_dist(d.p2, s->center), s->radius, tol);                  /* p2 on the sphere */
-        assert_near(prox_v3_dist(d.p1, prox_v3(q.x, q.y, q.z)), 0.0, 1e-12 * S * 4); /* unique closest point */
-        assert_near(d.certificate_gap, d.distance, tol);
-    } else if (sd < -tol) {
-        ++*n_ov;
-        assert_true(d.intersect);
-        assert_true(brute_signed(b, L3(d.p1), &tmp) <= tol);
-        assert_true(prox_v3_dist(d.p1, s->center) <= s->radius + tol);
-    }
-    prox_signed_result r = prox_box_sph_signed_distance(b, s);
-    assert_int_equal(r.status, PROX_OK);
-    assert_near(r.sd, (double)sd, sd < 0 ? 1e-9 * S : tol);
-    assert_near(prox_v3_norm(r.normal), 1.0, 1e-14);
-    assert_near(prox_v3_dist(r.p2, prox_v3_mad(r.p1, r.sd, r.normal)), 0.0, 4 * tol);
-    assert_near((double)brute_signed(b, L3(r.p1), &tmp), 0.0, tol); /* p1 on the box's boundary */
-    assert_near(prox_v3_dist(r.p2, s->center), s->radius, tol);
-    /* repositioning the sphere leaves exactly the margin */
-    prox_shape A = prox_shape_from_box(*b), B = prox_shape_from_sph(*s);
-    double margin = 0.05 * S;
-    prox_reposition_result rp = prox_shape_reposition(&A, &B, margin);
-    assert_int_equal(rp.status, PROX_OK);
-    prox_shape B2 = prox_shape_translate(&B, rp.translation);
-    ld after = brute_signed(b, L3(B2.u.sph.center), &tmp) - s->radius;
-    assert_near((double)after, rp.moved ? margin : (double)sd, 1e-9 * S);
+    tbs_solid A = {prox_shape_from_box(*b), b, brute_signed};
+    ld sd = tbs_check_sph_distance(&A, s, prox_box_sph_distance(b, s), n_dis, n_ov);
+    tbs_check_sph_signed(&A, s, prox_box_sph_signed_distance(b, s), sd);
+    tbs_check_sph_reposition(&A, s, sd);
 }
 
 static void test_random_pairs(void **st)

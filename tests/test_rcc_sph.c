@@ -5,34 +5,24 @@
  * Hand-made cases: sphere touching the rim, on the end face, beside the side, inside the cylinder, the
  * cylinder inside the sphere, and the report's configurations (LA-UR-13-26757 Sec. 3.5, Figs. 16-22:
  * Configuration 1 beside the side; Configurations 2/3 beyond an end, Types 1-4). */
-#include "test_util.h"
-#include "prox/query.h"
-
-typedef long double ld;
-typedef struct lv {
-    ld x, y, z;
-} lv;
-static lv L3(prox_vec3 v) { lv r = {v.x, v.y, v.z}; return r; }
-static lv lsub(lv a, lv b) { lv r = {a.x - b.x, a.y - b.y, a.z - b.z}; return r; }
-static lv lmad(lv a, ld s, lv b) { lv r = {a.x + s * b.x, a.y + s * b.y, a.z + s * b.z}; return r; }
-static ld ldot(lv a, lv b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-static ld lnorm(lv a) { return sqrtl(ldot(a, a)); }
+#include "test_brute_shapes.h"
 
 /* Brute force: signed distance of x to the solid cylinder (negative inside) and the nearest boundary
  * point q, as the minimum over the lateral patch and the two end disks. */
-static ld brute_signed(const prox_rcc *c, lv x, lv *q)
+static ld brute_signed(const void *solid, lv3 x, lv3 *q)
 {
-    lv b = L3(c->base), ax = L3(c->axis);
+    const prox_rcc *c = solid;
+    lv3 b = L(c->base), ax = L(c->axis);
     ld h = lnorm(ax), r = c->radius;
-    lv w = {ax.x / h, ax.y / h, ax.z / h};
+    lv3 w = {ax.x / h, ax.y / h, ax.z / h};
     ld t = ldot(lsub(x, b), w);
-    lv rad = lmad(lsub(x, b), -t, w);
+    lv3 rad = lmad(lsub(x, b), -t, w);
     ld rho = lnorm(rad);
-    lv e = rho > 0 ? (lv){rad.x / rho, rad.y / rho, rad.z / rho} : (lv){0, 0, 0};
+    lv3 e = rho > 0 ? (lv3){rad.x / rho, rad.y / rho, rad.z / rho} : (lv3){0, 0, 0};
     if (!(rho > 0)) { /* on the axis: any radial direction */
-        lv a = fabsl(w.x) < 0.5L ? (lv){1, 0, 0} : (lv){0, 1, 0};
+        lv3 a = fabsl(w.x) < 0.5L ? (lv3){1, 0, 0} : (lv3){0, 1, 0};
         a = lmad(a, -ldot(a, w), w);
-        e = (lv){a.x / lnorm(a), a.y / lnorm(a), a.z / lnorm(a)};
+        e = (lv3){a.x / lnorm(a), a.y / lnorm(a), a.z / lnorm(a)};
     }
     int inside = t >= 0 && t <= h && rho <= r;
     /* lateral patch: the point at the clamped height on the radial line */
@@ -47,58 +37,25 @@ static ld brute_signed(const prox_rcc *c, lv x, lv *q)
     return inside ? -best : best;
 }
 
-static double pair_scale(const prox_rcc *c, const prox_sph *s)
-{
-    prox_shape A = prox_shape_from_rcc(*c), B = prox_shape_from_sph(*s);
-    return prox_shape_pair_scale(&A, &B);
-}
-
 /* One pair against the brute force (distance, points, certificate; signed distance, witnesses;
  * repositioning), in both argument orders of the generic entry point. */
 static void check_pair(const prox_rcc *c, const prox_sph *s, int *n_dis, int *n_ov)
 {
-    double S = pair_scale(c, s), tol = 1e-12 * S;
-    lv q, tmp;
-    ld sd = brute_signed(c, L3(s->center), &q) - s->radius;
-    prox_distance_result d = prox_rcc_sph_distance(c, s);
-    assert_int_equal(d.status, PROX_OK);
-    if (sd > tol) {
-        ++*n_dis;
-        assert_false(d.intersect);
-        assert_near(d.distance, (double)sd, tol);
-        assert_near(prox_v3_dist(d.p1, d.p2), d.distance, tol);
-        assert_true(brute_signed(c, L3(d.p1), &tmp) <= tol);
-        assert_near(prox_v3_dist(d.p2, s->center), s->radius, tol);
-        assert_near(prox_v3_dist(d.p1, prox_v3(q.x, q.y, q.z)), 0.0, 4 * tol);
-        assert_near(d.certificate_gap, d.distance, tol);
-    } else if (sd < -tol) {
-        ++*n_ov;
-        assert_true(d.intersect);
-        assert_true(brute_signed(c, L3(d.p1), &tmp) <= tol);
-        assert_true(prox_v3_dist(d.p1, s->center) <= s->radius + tol);
-    }
+    tbs_solid A = {prox_shape_from_rcc(*c), c, brute_signed};
+    double tol = 1e-12 * tbs_sph_pair_scale(&A, s);
+    lv3 tmp;
+    ld sd = tbs_check_sph_distance(&A, s, prox_rcc_sph_distance(c, s), n_dis, n_ov);
     prox_signed_result r = prox_rcc_sph_signed_distance(c, s);
-    assert_int_equal(r.status, PROX_OK);
-    assert_near(r.sd, (double)sd, sd < 0 ? 1e-9 * S : tol);
-    assert_near(prox_v3_norm(r.normal), 1.0, 1e-14);
-    assert_near(prox_v3_dist(r.p2, prox_v3_mad(r.p1, r.sd, r.normal)), 0.0, 4 * tol);
-    if (fabsl(brute_signed(c, L3(r.p1), &tmp)) > tol)
+    if (fabsl(brute_signed(c, L(r.p1), &tmp)) > tol)
         print_error("c %a %a %a ax %a %a %a r %a s %a %a %a R %a sd %g p1 %g %g %g\n", c->base.x, c->base.y, c->base.z, c->axis.x, c->axis.y, c->axis.z, c->radius, s->center.x, s->center.y, s->center.z, s->radius, (double)sd, r.p1.x, r.p1.y, r.p1.z);
-    assert_near((double)brute_signed(c, L3(r.p1), &tmp), 0.0, tol);
-    assert_near(prox_v3_dist(r.p2, s->center), s->radius, tol);
+    tbs_check_sph_signed(&A, s, r, sd);
     /* generic entry, sphere first: mirrored answer */
-    prox_shape A = prox_shape_from_rcc(*c), B = prox_shape_from_sph(*s);
-    prox_signed_result m = prox_shape_signed_distance(&B, &A);
+    prox_shape B = prox_shape_from_sph(*s);
+    prox_signed_result m = prox_shape_signed_distance(&B, &A.shape);
     assert_near(m.sd, r.sd, 0.0);
     assert_near(prox_v3_dist(m.p1, r.p2), 0.0, 0.0);
     assert_near(m.normal.x, -r.normal.x, 0.0);
-    /* repositioning the sphere leaves exactly the margin */
-    double margin = 0.05 * S;
-    prox_reposition_result rp = prox_shape_reposition(&A, &B, margin);
-    assert_int_equal(rp.status, PROX_OK);
-    prox_shape B2 = prox_shape_translate(&B, rp.translation);
-    ld after = brute_signed(c, L3(B2.u.sph.center), &tmp) - s->radius;
-    assert_near((double)after, rp.moved ? margin : (double)sd, 1e-9 * S);
+    tbs_check_sph_reposition(&A, s, sd);
 }
 
 static void test_random_pairs(void **st)
