@@ -54,6 +54,14 @@ bench_case *bench_add_method(const char *prefix, const bench_method *m, const be
 /* Accuracy of a method on a set (every pair, or the subset idx). */
 bench_accuracy bench_method_accuracy(const bench_method *m, const bench_pairs *P, const size_t *idx, size_t n);
 
+/* The prox cylinder methods the library has, NULL-terminated, in the order distance, SAT verdict,
+ * signed distance (bench_methods.c). */
+extern const bench_method *const bench_prox_methods[];
+#ifdef PROX_BENCH_HAVE_RCC
+/* The exact distance alone (prox_rcc_distance), for the per-class cases. */
+extern const bench_method bench_prox_distance_method;
+#endif
+
 /* The capsule approximation (segment-segment distance minus the radii), the floor of issue 3. */
 extern const bench_method bench_capsule_method;
 

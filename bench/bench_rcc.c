@@ -8,47 +8,6 @@
 #include <string.h>
 
 #include "bench_pairs.h"
-#include "prox/sat.h"
-
-/* The prox methods, each behind the uniform bench_method interface. */
-#ifdef PROX_BENCH_HAVE_RCC
-static void run_distance(const void *cfg, const prox_rcc *a, const prox_rcc *b, bench_answer *out)
-{
-    (void)cfg;
-    prox_rcc_result r = prox_rcc_distance(a, b);
-    out->ok = r.status == PROX_OK;
-    out->value = r.distance;
-    out->intersect = r.interfere;
-    out->p1 = r.p1, out->p2 = r.p2;
-    out->has_points = 1;
-}
-static const bench_method m_distance = {"prox-distance", BENCH_DIST, run_distance, NULL};
-#endif
-#ifdef PROX_BENCH_HAVE_SAT
-static void run_sat(const void *cfg, const prox_rcc *a, const prox_rcc *b, bench_answer *out)
-{
-    (void)cfg;
-    prox_sat_result r = prox_rcc_sat(a, b);
-    out->ok = r.status == PROX_OK;
-    out->intersect = r.intersect;
-    out->value = r.value;
-    out->has_points = 0;
-}
-static const bench_method m_sat = {"prox-sat", BENCH_VERDICT, run_sat, NULL};
-#endif
-#ifdef PROX_BENCH_HAVE_SIGNED
-static void run_signed(const void *cfg, const prox_rcc *a, const prox_rcc *b, bench_answer *out)
-{
-    (void)cfg;
-    prox_signed_result r = prox_rcc_signed_distance(a, b);
-    out->ok = r.status == PROX_OK;
-    out->value = r.sd;
-    out->intersect = r.sd <= 0;
-    out->p1 = r.p1, out->p2 = r.p2;
-    out->has_points = 1;
-}
-static const bench_method m_signed = {"prox-signed", BENCH_SIGNED, run_signed, NULL};
-#endif
 
 /* Index subsets of a set: near / far field (Agarwal's split) and per class of a computed result. */
 typedef struct subset {
@@ -123,14 +82,14 @@ static void add_distance_classes(const bench_opts *o, const bench_pairs *P, cons
     char sfx[64];
     for (size_t k = 0; k < ncase; ++k) {
         snprintf(sfx, sizeof sfx, "/%s", k_cases[k].name);
-        bench_case *c = bench_add_method("rcc", &m_distance, P, cs[k].idx, cs[k].n, sfx);
+        bench_case *c = bench_add_method("rcc", &bench_prox_distance_method, P, cs[k].idx, cs[k].n, sfx);
         bench_note(c, "share_all=%.2f%%;share_near=%.2f%%;share_far=%.2f%%", 100.0 * (double)cs[k].n / (double)P->n,
                    100.0 * (double)cnt[k][0] / (double)nnear, 100.0 * (double)cnt[k][1] / (double)(P->n - nnear));
     }
     for (size_t k = 0; k < 8; ++k) {
         if (!ps[k].n) continue;
         snprintf(sfx, sizeof sfx, "/pair-%s", k_pairs[k]);
-        bench_case *c = bench_add_method("rcc", &m_distance, P, ps[k].idx, ps[k].n, sfx);
+        bench_case *c = bench_add_method("rcc", &bench_prox_distance_method, P, ps[k].idx, ps[k].n, sfx);
         bench_note(c, "share=%.2f%%", 100.0 * (double)ps[k].n / (double)P->n);
     }
 }
@@ -150,15 +109,7 @@ void bench_group_rcc(const bench_opts *o)
     const bench_method *methods[4];
     int nm = 0;
     methods[nm++] = &bench_capsule_method;
-#ifdef PROX_BENCH_HAVE_RCC
-    methods[nm++] = &m_distance;
-#endif
-#ifdef PROX_BENCH_HAVE_SAT
-    methods[nm++] = &m_sat;
-#endif
-#ifdef PROX_BENCH_HAVE_SIGNED
-    methods[nm++] = &m_signed;
-#endif
+    for (const bench_method *const *m = bench_prox_methods; *m; ++m) methods[nm++] = *m;
     for (int k = 0; k < nm; ++k) add_near_far(o, methods[k], P, nf);
 #ifdef PROX_BENCH_HAVE_RCC
     add_distance_classes(o, P, is_near);

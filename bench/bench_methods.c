@@ -1,0 +1,58 @@
+/* The prox cylinder-pair methods behind the uniform bench_method interface (bench_pairs.h), shared by
+ * the "rcc" and "stress" groups: the exact distance (prox_rcc_distance), the SAT verdict
+ * (prox_rcc_sat) and the signed distance (prox_rcc_signed_distance), each compiled in when the library
+ * defines it (PROX_BENCH_HAVE_*). */
+#include "bench_pairs.h"
+#include "prox/sat.h"
+
+#ifdef PROX_BENCH_HAVE_RCC
+static void run_distance(const void *cfg, const prox_rcc *a, const prox_rcc *b, bench_answer *out)
+{
+    (void)cfg;
+    prox_rcc_result r = prox_rcc_distance(a, b);
+    out->ok = r.status == PROX_OK;
+    out->value = r.distance;
+    out->intersect = r.interfere;
+    out->p1 = r.p1, out->p2 = r.p2;
+    out->has_points = 1;
+}
+const bench_method bench_prox_distance_method = {"prox-distance", BENCH_DIST, run_distance, NULL};
+#endif
+#ifdef PROX_BENCH_HAVE_SAT
+static void run_sat(const void *cfg, const prox_rcc *a, const prox_rcc *b, bench_answer *out)
+{
+    (void)cfg;
+    prox_sat_result r = prox_rcc_sat(a, b);
+    out->ok = r.status == PROX_OK;
+    out->intersect = r.intersect;
+    out->value = r.value;
+    out->has_points = 0;
+}
+static const bench_method m_sat = {"prox-sat", BENCH_VERDICT, run_sat, NULL};
+#endif
+#ifdef PROX_BENCH_HAVE_SIGNED
+static void run_signed(const void *cfg, const prox_rcc *a, const prox_rcc *b, bench_answer *out)
+{
+    (void)cfg;
+    prox_signed_result r = prox_rcc_signed_distance(a, b);
+    out->ok = r.status == PROX_OK;
+    out->value = r.sd;
+    out->intersect = r.sd <= 0;
+    out->p1 = r.p1, out->p2 = r.p2;
+    out->has_points = 1;
+}
+static const bench_method m_signed = {"prox-signed", BENCH_SIGNED, run_signed, NULL};
+#endif
+
+const bench_method *const bench_prox_methods[] = {
+#ifdef PROX_BENCH_HAVE_RCC
+    &bench_prox_distance_method,
+#endif
+#ifdef PROX_BENCH_HAVE_SAT
+    &m_sat,
+#endif
+#ifdef PROX_BENCH_HAVE_SIGNED
+    &m_signed,
+#endif
+    NULL,
+};
