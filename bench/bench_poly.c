@@ -79,32 +79,21 @@ static poly_set make_set(int degree, size_t n, uint64_t seed)
     return s;
 }
 
-static double q_fast(const void *data, size_t i)
+/* Query i of a set through the root finder `solve`, called directly by each timed case below (the
+ * constant function pointer is inlined away). */
+typedef prox_status (*poly_solver)(const double *c, int degree, double *roots, int *count);
+static inline double poly_query(poly_solver solve, const void *data, size_t i)
 {
     const poly_set *s = data;
     double roots[PROX_POLY_MAX_DEGREE];
     int count = 0;
-    prox_poly_real_roots(s->coef + i * (size_t)(s->degree + 1), s->degree, roots, &count);
+    solve(s->coef + i * (size_t)(s->degree + 1), s->degree, roots, &count);
     return count ? roots[0] : 0.0;
 }
 
-static double q_chain(const void *data, size_t i)
-{
-    const poly_set *s = data;
-    double roots[PROX_POLY_MAX_DEGREE];
-    int count = 0;
-    prox_poly_real_roots_fast(s->coef + i * (size_t)(s->degree + 1), s->degree, roots, &count);
-    return count ? roots[0] : 0.0;
-}
-
-static double q_gsl(const void *data, size_t i)
-{
-    const poly_set *s = data;
-    double roots[PROX_POLY_MAX_DEGREE];
-    int count = 0;
-    prox_poly_real_roots_gsl(s->coef + i * (size_t)(s->degree + 1), s->degree, roots, &count);
-    return count ? roots[0] : 0.0;
-}
+static double q_fast(const void *data, size_t i) { return poly_query(prox_poly_real_roots, data, i); }
+static double q_chain(const void *data, size_t i) { return poly_query(prox_poly_real_roots_fast, data, i); }
+static double q_gsl(const void *data, size_t i) { return poly_query(prox_poly_real_roots_gsl, data, i); }
 
 /* Counts distinct values (a near-double root reported twice counts once). */
 static int distinct(const double *v, int n)
