@@ -100,23 +100,17 @@ static double feature_distance(const prox_bframe *A, const prox_bframe *B, prox_
     return best;
 }
 
+/* Clips a segment to the box `solid` (a prox_bframe) enlarged by tol. */
+static int clip_box(const void *solid, prox_vec3 p, prox_vec3 q, double tol, double *s0, double *s1)
+{
+    return prox_bframe_clip_segment(solid, p, q, tol, s0, s1);
+}
+
 /* A common point of two intersecting boxes: some edge of one meets the other (a vertex of the
  * intersection polytope lies on an edge of A or of B). Returns 0 when none is found within tol. */
 static int common_point(const prox_bframe *A, const prox_bframe *B, double tol, prox_vec3 *x)
 {
-    for (int pass = 0; pass < 2; ++pass) {
-        const prox_bframe *E = pass ? B : A, *S = pass ? A : B;
-        for (int j = 0; j < 12; ++j) {
-            prox_vec3 p, q;
-            double s0, s1;
-            prox_bframe_edge(E, j, &p, &q);
-            if (prox_bframe_clip_segment(S, p, q, tol, &s0, &s1)) {
-                *x = prox_v3_mad(p, 0.5 * (s0 + s1), prox_v3_sub(q, p));
-                return 1;
-            }
-        }
-    }
-    return 0;
+    return prox_bframe_edges_meet(A, clip_box, B, tol, x) || prox_bframe_edges_meet(B, clip_box, A, tol, x);
 }
 
 PROX_API prox_distance_result prox_box_box_distance(const prox_box *a, const prox_box *b)
@@ -237,13 +231,7 @@ PROX_API prox_signed_result prox_box_box_signed_distance(const prox_box *a, cons
     prox_distance_result d = prox_box_box_distance(a, b);
     r.status = d.status;
     if (r.status != PROX_OK) return r;
-    if (!d.intersect && d.distance > 0.0) {
-        r.sd = d.distance;
-        r.normal = prox_v3_divs(prox_v3_sub(d.p2, d.p1), d.distance);
-        r.p1 = d.p1;
-        r.p2 = d.p2;
-        return r;
-    }
+    if (!d.intersect && d.distance > 0.0) return prox_signed_from_disjoint(&d);
     /* Depth: the least overlap over the 15 axes (exact). Witness: the axes in increasing overlap until
      * one realises it (ties between a face and an edge axis, e.g. an edge lying across a face, can put
      * first an axis whose support features do not meet). */

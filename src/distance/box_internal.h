@@ -142,6 +142,27 @@ static inline int prox_bframe_clip_segment(const prox_bframe *f, prox_vec3 p, pr
     return 1;
 }
 
+/* Clips the segment p + s (q - p), s in [0,1], to a solid enlarged by tol: 1 and the parameter
+ * interval [s0, s1] when they meet. */
+typedef int (*prox_clip_fn)(const void *solid, prox_vec3 p, prox_vec3 q, double tol, double *s0, double *s1);
+
+/* Does an edge of the box E meet the solid (enlarged by tol)? Edges in order 0..11; *x receives the
+ * midpoint of the first meeting edge's clipped part. */
+static inline int prox_bframe_edges_meet(const prox_bframe *E, prox_clip_fn clip, const void *solid, double tol,
+                                         prox_vec3 *x)
+{
+    for (int j = 0; j < 12; ++j) {
+        prox_vec3 p, q;
+        double s0, s1;
+        prox_bframe_edge(E, j, &p, &q);
+        if (clip(solid, p, q, tol, &s0, &s1)) {
+            *x = prox_v3_mad(p, 0.5 * (s0 + s1), prox_v3_sub(q, p));
+            return 1;
+        }
+    }
+    return 0;
+}
+
 /* Closest points of segments [p1,q1] and [p2,q2] (Ericson, Real-Time Collision Detection 5.1.9,
  * clamped in the order s, t, s); returns the distance, *c1 and *c2 the points. */
 static inline double prox_seg_seg(prox_vec3 p1, prox_vec3 q1, prox_vec3 p2, prox_vec3 q2, prox_vec3 *c1, prox_vec3 *c2)
@@ -191,6 +212,17 @@ static inline double prox_bframe_size(const prox_bframe *f)
     if (f->h[1] > s) s = f->h[1];
     if (f->h[2] > s) s = f->h[2];
     return 2.0 * s;
+}
+
+/* Signed result of disjoint solids (d->distance > 0): sd = distance, unit normal from p1 to p2. */
+static inline prox_signed_result prox_signed_from_disjoint(const prox_distance_result *d)
+{
+    prox_signed_result r = {0};
+    r.sd = d->distance;
+    r.normal = prox_v3_divs(prox_v3_sub(d->p2, d->p1), d->distance);
+    r.p1 = d->p1;
+    r.p2 = d->p2;
+    return r;
 }
 
 /* First failing status of two validations (both inputs are validated; validation is side-effect free). */

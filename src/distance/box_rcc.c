@@ -20,8 +20,9 @@
 #include "prox/support.h"
 
 /* Clips p + s (q - p), s in [0,1], to the solid cylinder enlarged by tol. */
-static int clip_segment_cyl(const prox_cframe *c, prox_vec3 p, prox_vec3 q, double tol, double *s0, double *s1)
+static int clip_segment_cyl(const void *cyl, prox_vec3 p, prox_vec3 q, double tol, double *s0, double *s1)
 {
+    const prox_cframe *c = cyl;
     prox_vec3 d = prox_v3_sub(q, p), o = prox_v3_sub(p, c->base);
     double t0 = prox_v3_dot(o, c->w), dt = prox_v3_dot(d, c->w), lo = 0.0, hi = 1.0;
     if (dt != 0.0) { /* slab 0 <= t <= h */
@@ -110,18 +111,11 @@ static double pair_scale(const prox_bframe *B, const prox_cframe *c)
 /* The verdict with a common point when they meet. */
 static int box_rcc_meet(const prox_bframe *B, const prox_cframe *c, double tol, prox_vec3 *x)
 {
-    double s0, s1;
-    for (int j = 0; j < 12; ++j) {
-        prox_vec3 p, q;
-        prox_bframe_edge(B, j, &p, &q);
-        if (clip_segment_cyl(c, p, q, tol, &s0, &s1)) {
-            *x = prox_v3_mad(p, 0.5 * (s0 + s1), prox_v3_sub(q, p));
-            return 1;
-        }
-    }
+    if (prox_bframe_edges_meet(B, clip_segment_cyl, c, tol, x)) return 1;
     for (int top = 0; top < 2; ++top)
         if (rim_meets_box(c, top, B, tol, x)) return 1;
     prox_vec3 top = prox_v3_mad(c->base, c->h, c->w);
+    double s0, s1;
     if (prox_bframe_clip_segment(B, c->base, top, tol, &s0, &s1)) {
         *x = prox_v3_mad(c->base, 0.5 * (s0 + s1) * c->h, c->w);
         return 1;
@@ -129,15 +123,26 @@ static int box_rcc_meet(const prox_bframe *B, const prox_cframe *c, double tol, 
     return 0;
 }
 
+/* Validates the pair, builds the frames and decides the verdict shared by the test and the distance
+ * (*x a common point when they meet). */
+static prox_status box_rcc_setup(const prox_box *a, const prox_rcc *b, prox_bframe *B, prox_cframe *c, int *meet,
+                                 prox_vec3 *x)
+{
+    prox_status st = prox_valid2(prox_box_validate(a), prox_rcc_validate(b));
+    if (st != PROX_OK) return st;
+    *B = prox_bframe_make(a);
+    *c = prox_cframe_make(b);
+    *meet = box_rcc_meet(B, c, PROX_QUERY_REL_TOL * pair_scale(B, c), x);
+    return PROX_OK;
+}
+
 PROX_API prox_test_result prox_box_rcc_test(const prox_box *a, const prox_rcc *b)
 {
     prox_test_result r = {0};
-    r.status = prox_valid2(prox_box_validate(a), prox_rcc_validate(b));
-    if (r.status != PROX_OK) return r;
-    prox_bframe B = prox_bframe_make(a);
-    prox_cframe c = prox_cframe_make(b);
+    prox_bframe B;
+    prox_cframe c;
     prox_vec3 x;
-    r.intersect = box_rcc_meet(&B, &c, PROX_QUERY_REL_TOL * pair_scale(&B, &c), &x);
+    r.status = box_rcc_setup(a, b, &B, &c, &r.intersect, &x);
     return r;
 }
 
@@ -249,13 +254,12 @@ static double rim_face(const prox_cframe *c, int top, const prox_bframe *B, int 
 PROX_API prox_distance_result prox_box_rcc_distance(const prox_box *a, const prox_rcc *b)
 {
     prox_distance_result r = {0};
-    r.status = prox_valid2(prox_box_validate(a), prox_rcc_validate(b));
-    if (r.status != PROX_OK) return r;
-    prox_bframe B = prox_bframe_make(a);
-    prox_cframe c = prox_cframe_make(b);
+    prox_bframe B;
+    prox_cframe c;
     prox_vec3 x, y;
-    if (box_rcc_meet(&B, &c, PROX_QUERY_REL_TOL * pair_scale(&B, &c), &x)) {
-        r.intersect = 1;
+    r.status = box_rcc_setup(a, b, &B, &c, &r.intersect, &x);
+    if (r.status != PROX_OK) return r;
+    if (r.intersect) {
         r.p1 = r.p2 = x;
         return r;
     }
@@ -283,13 +287,7 @@ PROX_API prox_signed_result prox_box_rcc_signed_distance(const prox_box *a, cons
     prox_distance_result d = prox_box_rcc_distance(a, b);
     r.status = d.status;
     if (r.status != PROX_OK) return r;
-    if (!d.intersect && d.distance > 0.0) {
-        r.sd = d.distance;
-        r.normal = prox_v3_divs(prox_v3_sub(d.p2, d.p1), d.distance);
-        r.p1 = d.p1;
-        r.p2 = d.p2;
-        return r;
-    }
+    if (!d.intersect && d.distance > 0.0) return prox_signed_from_disjoint(&d);
     /* overlapping: minimum of h_A(D) + h_B(-D) over unit D (support-function engine) */
     prox_shape sa = prox_shape_from_box(*a), sb = prox_shape_from_rcc(*b);
     return prox_shape_signed_distance_support(&sa, &sb);
