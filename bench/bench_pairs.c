@@ -165,3 +165,17 @@ bench_case *bench_add_method(const char *prefix, const bench_method *m, const be
     }
     return c;
 }
+
+void bench_add_on_reference_sets(const bench_opts *o, const char *prefix, const bench_method *m)
+{
+    char name[96];
+    snprintf(name, sizeof name, "%s/%s/", prefix, m->name);
+    if (!bench_selected(o, name)) return;
+    const char *sets[] = {"agarwal_public", "stress_public"};
+    for (int k = 0; k < 2; ++k) {
+        const bench_pairs *V = bench_pairs_valid(o, sets[k]);
+        if (V) bench_add_method(prefix, m, V, NULL, V->n, NULL);
+    }
+    const bench_pairs *G = bench_pairs_stressgen(o);
+    bench_add_method(prefix, m, G, NULL, G->n, NULL);
+}

@@ -51,6 +51,10 @@ typedef struct bench_method {
 bench_case *bench_add_method(const char *prefix, const bench_method *m, const bench_pairs *P, const size_t *idx,
                              size_t n, const char *suffix);
 
+/* Registers the method under `prefix` ("rcc", "peer") on every set with a reference: the validation
+ * sets agarwal_public and stress_public (when present) and the stress generator. */
+void bench_add_on_reference_sets(const bench_opts *o, const char *prefix, const bench_method *m);
+
 /* Accuracy of a method on a set (every pair, or the subset idx). */
 bench_accuracy bench_method_accuracy(const bench_method *m, const bench_pairs *P, const size_t *idx, size_t n);
 

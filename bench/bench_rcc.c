@@ -39,21 +39,6 @@ static void add_near_far(const bench_opts *o, const bench_method *m, const bench
     bench_add_method("rcc", m, P, nf[1].idx, nf[1].n, "/far");
 }
 
-/* Registers a method on the sets with references. */
-static void add_reference_sets(const bench_opts *o, const bench_method *m)
-{
-    char name[96];
-    snprintf(name, sizeof name, "rcc/%s/", m->name);
-    if (!bench_selected(o, name)) return;
-    const char *sets[] = {"agarwal_public", "stress_public"};
-    for (int k = 0; k < 2; ++k) {
-        const bench_pairs *V = bench_pairs_valid(o, sets[k]);
-        if (V) bench_add_method("rcc", m, V, NULL, V->n, NULL);
-    }
-    const bench_pairs *G = bench_pairs_stressgen(o);
-    bench_add_method("rcc", m, G, NULL, G->n, NULL);
-}
-
 #ifdef PROX_BENCH_HAVE_RCC
 static const struct {
     int code;
@@ -114,5 +99,5 @@ void bench_group_rcc(const bench_opts *o)
 #ifdef PROX_BENCH_HAVE_RCC
     add_distance_classes(o, P, is_near);
 #endif
-    for (int k = 0; k < nm; ++k) add_reference_sets(o, methods[k]);
+    for (int k = 0; k < nm; ++k) bench_add_on_reference_sets(o, "rcc", methods[k]);
 }
