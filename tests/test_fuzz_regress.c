@@ -3,6 +3,7 @@
 #include "test_util.h"
 
 #include "prox/query.h"
+#include "prox/deck.h"
 #include "prox/sat.h"
 
 /* fuzz_queries crash-6fd5bd04: an RPP whose extents are subnormal (~3.5e-310) against a sphere
@@ -65,6 +66,23 @@ static void test_fuzz_extreme_needle_disk(void **state)
     assert_true(isfinite(g.sd));
 }
 
+/* fuzz_deck crash-62d7c137 (found by CI's 20 s fuzzing run): a surface-block card made only of
+ * '&'-continued blank lines reached surface_card with no token, which read tok[0] uninitialised
+ * (heap-use-after-free / SEGV under ASan).  Such a card holds nothing and is skipped. */
+static void test_fuzz_deck_blank_card(void **state)
+{
+    (void)state;
+    const char text[] = "s\xff;+\xc3\n&\n\xff\xff*\n\n&\n\xff\xff*\n\x0b&";
+    prox_deck d = {0};
+    prox_status st = prox_deck_parse(text, &d);
+    assert_true(st == PROX_OK || st == PROX_ENOMEM);
+    prox_deck_free(&d);
+    const char deck2[] = "title\n1 0 -1\n\n   &\n     &\n1 so 1\n\n";
+    prox_deck e = {0};
+    assert_int_equal(prox_deck_parse(deck2, &e), PROX_OK);
+    prox_deck_free(&e);
+}
+
 int main(void)
 {
     test_init();
@@ -72,6 +90,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_subnormal_rpp_sph),
         cmocka_unit_test(test_fuzz_sat_range),
         cmocka_unit_test(test_fuzz_extreme_needle_disk),
+        cmocka_unit_test(test_fuzz_deck_blank_card),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

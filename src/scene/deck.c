@@ -294,6 +294,7 @@ static void surface_card(parser *p, char *text, int line)
 {
     char *tok[DECK_MAX_ENTRIES + 4];
     size_t nt = tokenize(text, tok, sizeof tok / sizeof tok[0]);
+    if (nt == 0) return; /* only blanks (e.g. lines ended by '&' with nothing after): no card */
     if (nt == sizeof tok / sizeof tok[0]) {
         add_note(p, 0, line, "surface card has too many entries");
         return;
