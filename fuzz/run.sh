@@ -6,6 +6,8 @@
 # linked into the three harnesses. Crashes are written to $BUILD/crashes/<name>/ and make the script
 # exit 1; each one must become a regression test in tests/test_fuzz_regress.c (crash files kept for
 # the record are in fuzz/crashes/). Prints the build and run times.
+# Reproducible runs (CI): PROX_FUZZ_SEED=S fixes libFuzzer's seed and PROX_FUZZ_RUNS=N stops each
+# harness after N inputs (the seconds then only cap the time), so the same inputs are tried every run.
 set -eu
 SECONDS_PER=${1:-30}
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -42,6 +44,8 @@ for name in queries deck pairs; do
     mkdir -p "$work" "$crashes"
     extra=""
     [ "$name" = pairs ] && extra="-close_fd_mask=3"
+    [ -n "${PROX_FUZZ_SEED:-}" ] && extra="$extra -seed=$PROX_FUZZ_SEED"
+    [ -n "${PROX_FUZZ_RUNS:-}" ] && extra="$extra -runs=$PROX_FUZZ_RUNS"
     echo "== fuzz_$name for ${SECONDS_PER}s"
     # shellcheck disable=SC2086
     if ! "$BUILD/fuzz_$name" -max_total_time="$SECONDS_PER" -timeout=10 -rss_limit_mb=2048 -max_len=4096 \
