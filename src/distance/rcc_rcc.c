@@ -98,7 +98,8 @@ static int cyl_contains(const cyl *k, prox_vec3 x, double tol)
     prox_vec3 d = prox_v3_sub(x, k->b);
     double t = prox_v3_dot(d, k->w);
     if (t < -tol || t > k->h + tol) return 0;
-    return prox_v3_norm(prox_v3_mad(d, -t, k->w)) <= k->r + tol;
+    double rt = k->r + tol; /* squared comparison: no square root on this hot path */
+    return prox_v3_norm2(prox_v3_mad(d, -t, k->w)) <= rt * rt;
 }
 
 /* Records x as a common point of the solids after checking it against both (within the ulp-level
@@ -657,7 +658,7 @@ PROX_API prox_rcc_result prox_rcc_distance(const prox_rcc *a, const prox_rcc *b)
     query q = {0};
     cyl_init(&q.A, a, origin);
     cyl_init(&q.B, b, origin);
-    q.scale = prox_rcc_pair_scale(a, b);
+    q.scale = fmax(fmax(prox_v3_norm(prox_v3_sub(q.B.c, q.A.c)), fmax(q.A.h, q.B.h)), fmax(q.A.r, q.B.r));
     q.eps = 64.0 * DBL_EPSILON * q.scale;
     q.lower = q.gap = -INFINITY;
     q.parallel = prox_v3_norm2(prox_v3_cross(q.A.w, q.B.w)) <= 1e-30;
