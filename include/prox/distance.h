@@ -20,11 +20,11 @@ typedef enum prox_feature {
 /// Which primitive pair produced the minimum.
 typedef enum prox_pair_kind {
     PROX_PAIR_NONE = 0,  ///< no minimum computed (error) or overlap witness only
-    PROX_PAIR_SS,        ///< surface-surface P(S,S)
+    PROX_PAIR_SS,        ///< surface-surface P(S,S); a disk against a side (perpendicular axes) is
+                         ///< reported as CS, its minimum being attained at a rim point too
     PROX_PAIR_CS,        ///< circle (rim of one) - surface (of the other), P(C,L) - r
-    PROX_PAIR_DS,        ///< disk interior - surface (axes perpendicular)
-    PROX_PAIR_CD,        ///< circle - disk interior, P(D,C)
-    PROX_PAIR_DD,        ///< disk - disk (parallel end faces)
+    PROX_PAIR_CD,        ///< circle - disk interior, P(D,C); parallel end faces (D-D) are reported
+                         ///< here with point_set, as their minimum is also attained at a rim point
     PROX_PAIR_CC,        ///< circle - circle P(C,C)
     PROX_PAIR_OVERLAP    ///< the solids overlap; p1 = p2 is a common point
 } prox_pair_kind;

@@ -59,7 +59,6 @@ typedef struct query {
     prox_vec3 common; /* a point of A and B when overlap */
     int parallel;     /* axes parallel to working precision */
     int tag;          /* the groups being generated are the hierarchy's picks */
-    int ok;           /* the best candidate is certified */
     double lower;     /* max of gap(n) over the normals evaluated so far (a lower bound) */
     int best_gap_done; /* the best candidate's own directions are already in `lower` */
     double gap;       /* the best separation seen along the best candidate's normal */
@@ -339,8 +338,7 @@ static int certified(query *q, double *gap_out)
 static int settle(query *q)
 {
     if (q->overlap) return 1;
-    q->ok = certified(q, &q->gap);
-    return q->ok;
+    return certified(q, &q->gap);
 }
 
 /* Lower bound on the distance between rim circles: centre distance minus radii, and the range of
