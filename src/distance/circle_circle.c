@@ -58,11 +58,11 @@ static cc_prob cc_make(const prox_fcircle *a, const prox_fcircle *b)
     return p;
 }
 
-/* h, h' and g at th (formulas in the file comment; P'' = -P, |P'| = 1). */
-static cc_eval cc_at(const cc_prob *p, double th)
+/* h, h' and g at the angle (c, s) = (cos th, sin th) (formulas in the file comment; P'' = -P,
+ * |P'| = 1). */
+static cc_eval cc_at_cs(const cc_prob *p, double c, double s)
 {
     cc_eval e = {0, 0, 0, 0};
-    double c = cos(th), s = sin(th);
     double dx = c - p->cx, dy = s - p->cy, dz = -p->cz;
     double dn = p->nx * dx + p->ny * dy + p->nz * dz;
     double qx = dx - dn * p->nx, qy = dy - dn * p->ny, qz = dz - dn * p->nz; /* D_perp */
@@ -81,6 +81,8 @@ static cc_eval cc_at(const cc_prob *p, double th)
     e.dh = p->r * qp1 * qp1 / (rho * rho * rho) + f * (1.0 - np1 * np1 - qp0) + np1 * np1 - dn * np0;
     return e;
 }
+
+static cc_eval cc_at(const cc_prob *p, double th) { return cc_at_cs(p, cos(th), sin(th)); }
 
 /* Safeguarded Newton on h from th: steps clamped to 0.5 rad, halved until |h| decreases; returns
  * the best angle found and its evaluation. */
@@ -110,12 +112,30 @@ static double cc_polish(const cc_prob *p, double th, cc_eval *out)
     return th;
 }
 
-/* Local refinement used by the RCC-RCC fast path: safeguarded Newton on g'/2 from th0. */
-double prox_circle_circle_local(const prox_fcircle *a, const prox_fcircle *b, double th0)
+/* Local refinement used by the RCC-RCC fast path: cc_polish on the unit vector of the angle
+ * (prox_unit2_step in place of th - step: no trigonometric call per evaluation). */
+prox_unit2 prox_circle_circle_local(const prox_fcircle *a, const prox_fcircle *b, prox_unit2 u)
 {
     cc_prob p = cc_make(a, b);
-    cc_eval e;
-    return cc_polish(&p, th0, &e);
+    cc_eval e = cc_at_cs(&p, u.c, u.s);
+    for (int it = 0; it < 50 && !e.axis && e.h != 0.0; ++it) {
+        if (e.dh == 0.0) break;
+        double step = e.h / e.dh;
+        if (step > 0.5) step = 0.5;
+        if (step < -0.5) step = -0.5;
+        int moved = 0;
+        int tiny = fabs(step) <= 1e-9; /* quadratic regime: see cc_polish */
+        for (int k = 0; k < (tiny ? 1 : 6); ++k, step *= 0.5) {
+            prox_unit2 un = prox_unit2_step(u, step);
+            cc_eval en = cc_at_cs(&p, un.c, un.s);
+            if (!en.axis && fabs(en.h) < fabs(e.h)) {
+                u = un, e = en, moved = 1;
+                break;
+            }
+        }
+        if (!moved || fabs(step) <= 4.0 * DBL_EPSILON) break;
+    }
+    return u;
 }
 
 /* Quadratic in t for k0 + kc cos + ks sin, times (1 + t^2). */

@@ -30,12 +30,13 @@
 typedef struct cl_coef {
     double A, B, C, D;
 } cl_coef;
-static double cl_h(const cl_coef *k, double th, double *dh)
+static double cl_h_cs(const cl_coef *k, double c, double s, double *dh)
 {
-    double s = sin(th), c = cos(th), s2 = 2.0 * s * c, c2 = (c - s) * (c + s); /* one sincos */
+    double s2 = 2.0 * s * c, c2 = (c - s) * (c + s);
     if (dh) *dh = k->A * c - k->B * s - 2.0 * k->C * s2 + 2.0 * k->D * c2;
     return k->A * s + k->B * c + k->C * c2 + k->D * s2;
 }
+static double cl_h(const cl_coef *k, double th, double *dh) { return cl_h_cs(k, cos(th), sin(th), dh); }
 
 /* Newton on h from th; returns the iterate with the smallest |h| (steps limited to 0.5 rad). */
 static double cl_polish(const cl_coef *k, double th)
@@ -104,12 +105,27 @@ static cl_coef cl_make(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, prox_vec
     return k;
 }
 
-/* Local refinement for the RCC-RCC fast path: Newton on h from th0 (no quartic). */
-double prox_circle_line_local(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, double th0)
+/* Local refinement for the RCC-RCC fast path: cl_polish on the unit vector of the angle (no
+ * quartic, no trigonometric call; prox_unit2_step). */
+prox_unit2 prox_circle_line_local(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, prox_unit2 a)
 {
     prox_vec3 e;
     cl_coef k = cl_make(c, p, w, &e);
-    return cl_polish(&k, th0);
+    double dh, h = cl_h_cs(&k, a.c, a.s, &dh), hb = fabs(h);
+    prox_unit2 best = a;
+    for (int it = 0; it < 12 && hb > 0.0; ++it) {
+        if (!(fabs(dh) > 0.0)) break;
+        double step = h / dh;
+        if (!(fabs(step) <= 0.5)) break;
+        a = prox_unit2_step(a, step);
+        h = cl_h_cs(&k, a.c, a.s, &dh);
+        if (fabs(h) < hb) {
+            hb = fabs(h);
+            best = a;
+        }
+        if (fabs(step) <= 8.0 * DBL_EPSILON) break;
+    }
+    return best;
 }
 
 int prox_circle_line_stationary(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, double th[4], int *count)

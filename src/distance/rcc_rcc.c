@@ -176,11 +176,12 @@ static prox_feature cap_feature(int end) { return end ? PROX_FEAT_TOP : PROX_FEA
 /* Rim `end` of cylinder `rc` against the lateral surface of `lc`; `rim_is_a` orders the output. */
 /* Offers the rim points at the given angles against the lateral surface of lc (those whose foot on
  * lc's axis lies on the finite axis); a rim point within lc's radius there is a common point. */
-static void rim_lat_offer(query *q, const cyl *rc, int end, const cyl *lc, int rim_is_a, const double *th, int cnt)
+static void rim_lat_offer(query *q, const cyl *rc, int end, const cyl *lc, int rim_is_a, const prox_unit2 *th,
+                          int cnt)
 {
     const prox_fcircle *C = &rc->rim[end];
     for (int i = 0; i < cnt; ++i) {
-        prox_vec3 x = prox_fcircle_point(C, th[i]);
+        prox_vec3 x = prox_fcircle_at(C, th[i]);
         prox_vec3 dx = prox_v3_sub(x, lc->b);
         double t = prox_v3_dot(dx, lc->w);
         if (t < 0.0 || t > lc->h) continue;
@@ -203,12 +204,12 @@ static void rim_lat_offer(query *q, const cyl *rc, int end, const cyl *lc, int r
 static void cand_rim_lat(query *q, const cyl *rc, int end, const cyl *lc, int rim_is_a)
 {
     double th[4];
+    prox_unit2 a[4] = {{1.0, 0.0}}; /* the rim coaxial with the other axis: every point is equivalent */
     int cnt = 0;
-    if (prox_circle_line_stationary(&rc->rim[end], lc->b, lc->w, th, &cnt)) {
-        th[0] = 0.0; /* the rim is coaxial with the other axis: every point is equivalent */
-        cnt = 1;
-    }
-    rim_lat_offer(q, rc, end, lc, rim_is_a, th, cnt);
+    if (prox_circle_line_stationary(&rc->rim[end], lc->b, lc->w, th, &cnt)) cnt = 1;
+    else
+        for (int i = 0; i < cnt; ++i) a[i] = (prox_unit2){cos(th[i]), sin(th[i])};
+    rim_lat_offer(q, rc, end, lc, rim_is_a, a, cnt);
 }
 
 /* Fast path: Newton from the rim point nearest to the other axis (towards the axis' closest point
@@ -218,7 +219,7 @@ static void cand_rim_lat_local(query *q, const cyl *rc, int end, const cyl *lc, 
     const prox_fcircle *C = &rc->rim[end];
     prox_vec3 d = prox_v3_sub(C->c, lc->b);
     prox_vec3 g = prox_v3_neg(prox_v3_mad(d, -prox_v3_dot(d, lc->w), lc->w)); /* centre -> axis */
-    double th = prox_circle_line_local(C, lc->b, lc->w, atan2(prox_v3_dot(g, C->v), prox_v3_dot(g, C->u)));
+    prox_unit2 th = prox_circle_line_local(C, lc->b, lc->w, prox_unit2_of(prox_v3_dot(g, C->u), prox_v3_dot(g, C->v)));
     rim_lat_offer(q, rc, end, lc, rim_is_a, &th, 1);
 }
 
@@ -272,13 +273,13 @@ static void cand_rim_disk(query *q, const cyl *rc, int rend, const cyl *dc, int 
 /* ---- C-C: rim against rim (Sec. 3.5, degree 8) ---- */
 
 /* Offers the rim-rim pair at angle th on A's rim and its closest point on B's rim. */
-static void rim_rim_offer(query *q, int ea, int eb, double th)
+static void rim_rim_offer(query *q, int ea, int eb, prox_unit2 th)
 {
     const prox_fcircle *CA = &q->A.rim[ea], *CB = &q->B.rim[eb];
-    prox_vec3 x = prox_fcircle_point(CA, th);
+    prox_vec3 x = prox_fcircle_at(CA, th);
     prox_vec3 y = prox_fcircle_closest(CB, x, NULL);
     /* Normal from the two tangents (accurate when |y - x| is tiny); else from the points. */
-    prox_vec3 ta = prox_v3_add(prox_v3_scale(CA->u, -sin(th)), prox_v3_scale(CA->v, cos(th)));
+    prox_vec3 ta = prox_v3_add(prox_v3_scale(CA->u, -th.s), prox_v3_scale(CA->v, th.c));
     prox_vec3 tb = prox_v3_cross(CB->n, prox_v3_sub(y, CB->c));
     prox_vec3 n = prox_v3_cross(ta, tb);
     double nl = prox_v3_norm(n), tbl = prox_v3_norm(tb);
@@ -303,7 +304,7 @@ static prox_status cand_rim_rim(query *q, int ea, int eb)
         th[0] = 0.0;
         cnt = 1;
     }
-    for (int i = 0; i < cnt; ++i) rim_rim_offer(q, ea, eb, th[i]);
+    for (int i = 0; i < cnt; ++i) rim_rim_offer(q, ea, eb, (prox_unit2){cos(th[i]), sin(th[i])});
     return PROX_OK;
 }
 
@@ -311,8 +312,8 @@ static prox_status cand_rim_rim(query *q, int ea, int eb)
 static void cand_rim_rim_local(query *q, int ea, int eb, prox_vec3 nest)
 {
     const prox_fcircle *CA = &q->A.rim[ea];
-    double th0 = atan2(prox_v3_dot(nest, CA->v), prox_v3_dot(nest, CA->u));
-    rim_rim_offer(q, ea, eb, prox_circle_circle_local(CA, &q->B.rim[eb], th0));
+    prox_unit2 a0 = prox_unit2_of(prox_v3_dot(nest, CA->u), prox_v3_dot(nest, CA->v));
+    rim_rim_offer(q, ea, eb, prox_circle_circle_local(CA, &q->B.rim[eb], a0));
 }
 
 /* ---- certificates and lower bounds ---- */

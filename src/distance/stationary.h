@@ -13,11 +13,40 @@ typedef struct prox_fcircle {
     double r;
 } prox_fcircle;
 
+/* A point of the unit circle (cos theta, sin theta): the fast paths carry angles this way, so that
+ * no sine, cosine or arctangent is evaluated per Newton step. */
+typedef struct prox_unit2 {
+    double c, s;
+} prox_unit2;
+
+/* The unit vector of (x, y); (1, 0) when it has no direction. */
+static inline prox_unit2 prox_unit2_of(double x, double y)
+{
+    double l = sqrt(x * x + y * y);
+    prox_unit2 a = {1.0, 0.0};
+    if (l > 0.0 && isfinite(l)) a.c = x / l, a.s = y / l;
+    return a;
+}
+
+/* a rotated by -atan(d): the Newton update theta - d, with atan(d) = d - d^3/3 + ... in place of d,
+ * which keeps the quadratic convergence (the difference is of third order in the step). */
+static inline prox_unit2 prox_unit2_step(prox_unit2 a, double d)
+{
+    double k = 1.0 / sqrt(1.0 + d * d);
+    prox_unit2 b = {(a.c + d * a.s) * k, (a.s - d * a.c) * k};
+    return b;
+}
+
 /* Builds the frame with the same convention as prox_circle_frame (n must be unit). */
 prox_fcircle prox_fcircle_make(prox_vec3 center, prox_vec3 unit_normal, double radius);
 static inline prox_vec3 prox_fcircle_point(const prox_fcircle *c, double th)
 {
     return prox_v3_add(c->c, prox_v3_add(prox_v3_scale(c->u, c->r * cos(th)), prox_v3_scale(c->v, c->r * sin(th))));
+}
+/* The circle point at the angle given by its unit vector. */
+static inline prox_vec3 prox_fcircle_at(const prox_fcircle *c, prox_unit2 a)
+{
+    return prox_v3_add(c->c, prox_v3_add(prox_v3_scale(c->u, c->r * a.c), prox_v3_scale(c->v, c->r * a.s)));
 }
 
 /* Every stationary angle of f(theta) = dist^2(point(theta), line) for the infinite line through p
@@ -26,9 +55,9 @@ static inline prox_vec3 prox_fcircle_point(const prox_fcircle *c, double th)
  * Returns 1 when f is constant (line along the circle's axis): then count = 0. */
 int prox_circle_line_stationary(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, double th[4], int *count);
 
-/* A stationary angle of the same function near th0 (Newton only): the RCC-RCC fast path, whose answer
- * is then certified. */
-double prox_circle_line_local(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, double th0);
+/* A stationary angle of the same function near a0 (Newton only, trig-free): the RCC-RCC fast path,
+ * whose answer is then certified. */
+prox_unit2 prox_circle_line_local(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, prox_unit2 a0);
 
 /* Every stationary angle theta_a on circle a of g(theta_a) = dist^2(point_a(theta_a), circle b)
  * (Agarwal Sec. 3.5, degree 8 in tan(theta_a/2), rooted by prox_poly_real_roots; the angle pi is
@@ -38,9 +67,10 @@ double prox_circle_line_local(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, d
  * then count = 0 and callers treat the contact as a set. Returns a negative prox_status on failure. */
 int prox_circle_circle_stationary(const prox_fcircle *a, const prox_fcircle *b, double th[8], int *count);
 
-/* A stationary angle on circle a of dist^2(point_a(theta), circle b) near th0 (safeguarded Newton on
- * the trigonometric form, no polynomial): the fast path of RCC-RCC, whose answer is then certified. */
-double prox_circle_circle_local(const prox_fcircle *a, const prox_fcircle *b, double th0);
+/* A stationary angle on circle a of dist^2(point_a(theta), circle b) near a0 (safeguarded Newton on
+ * the trigonometric form, no polynomial, trig-free): the fast path of RCC-RCC, whose answer is then
+ * certified. */
+prox_unit2 prox_circle_circle_local(const prox_fcircle *a, const prox_fcircle *b, prox_unit2 a0);
 
 /* Closest point of circle b to point x; *degenerate = 1 when x is on b's axis (every point of b is
  * closest: an arbitrary one is returned). */
