@@ -112,23 +112,23 @@ static double cc_polish(const cc_prob *p, double th, cc_eval *out)
     return th;
 }
 
-/* Local refinement used by the RCC-RCC fast path: cc_polish on the unit vector of the angle
- * (prox_unit2_step in place of th - step: no trigonometric call per evaluation). */
+/* Local refinement used by the RCC-RCC fast path: a local MINIMUM of g near u (Newton on h alone
+ * may stop at a maximum or saddle of the rim-rim distance).  Safeguarded Newton on the unit vector of
+ * the angle (prox_unit2_step, no trigonometric call): the Newton step where h' > 0, else a descent
+ * step of 0.5 rad, halved until g decreases; below 1e-7 rad (quadratic regime, where the decrease is
+ * rounding) until |h| does. */
 prox_unit2 prox_circle_circle_local(const prox_fcircle *a, const prox_fcircle *b, prox_unit2 u)
 {
     cc_prob p = cc_make(a, b);
     cc_eval e = cc_at_cs(&p, u.c, u.s);
     for (int it = 0; it < 50 && !e.axis && e.h != 0.0; ++it) {
-        if (e.dh == 0.0) break;
-        double step = e.h / e.dh;
-        if (step > 0.5) step = 0.5;
-        if (step < -0.5) step = -0.5;
+        double step = e.dh > 0.0 ? e.h / e.dh : (e.h > 0.0 ? 0.5 : -0.5);
+        if (!(fabs(step) <= 0.5)) step = step > 0.0 ? 0.5 : -0.5;
         int moved = 0;
-        int tiny = fabs(step) <= 1e-9; /* quadratic regime: see cc_polish */
-        for (int k = 0; k < (tiny ? 1 : 6); ++k, step *= 0.5) {
+        for (int k = 0; k < 8 && !moved; ++k, step *= 0.5) {
             prox_unit2 un = prox_unit2_step(u, step);
             cc_eval en = cc_at_cs(&p, un.c, un.s);
-            if (!en.axis && fabs(en.h) < fabs(e.h)) {
+            if (!en.axis && (en.g < e.g || (fabs(step) <= 1e-7 && fabs(en.h) < fabs(e.h)))) {
                 u = un, e = en, moved = 1;
                 break;
             }

@@ -105,27 +105,36 @@ static cl_coef cl_make(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, prox_vec
     return k;
 }
 
-/* Local refinement for the RCC-RCC fast path: cl_polish on the unit vector of the angle (no
- * quartic, no trigonometric call; prox_unit2_step). */
+/* Local refinement for the RCC-RCC fast path: a local MINIMUM of the circle-to-line distance near
+ * a (a candidate must be a minimum; Newton on h alone may stop at the maximum or wander to the other
+ * minimum).  Safeguarded Newton on the unit vector of the angle (prox_unit2_step, no trigonometric
+ * call): the Newton step where h' > 0, else a descent step of 0.5 rad, halved until the distance
+ * decreases; below 1e-7 rad (quadratic regime, where the decrease is rounding) until |h| does. */
 prox_unit2 prox_circle_line_local(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, prox_unit2 a)
 {
     prox_vec3 e;
     cl_coef k = cl_make(c, p, w, &e);
-    double dh, h = cl_h_cs(&k, a.c, a.s, &dh), hb = fabs(h);
-    prox_unit2 best = a;
-    for (int it = 0; it < 12 && hb > 0.0; ++it) {
-        if (!(fabs(dh) > 0.0)) break;
-        double step = h / dh;
-        if (!(fabs(step) <= 0.5)) break;
-        a = prox_unit2_step(a, step);
-        h = cl_h_cs(&k, a.c, a.s, &dh);
-        if (fabs(h) < hb) {
-            hb = fabs(h);
-            best = a;
+    /* g/2 up to a constant: (e.u) cos + (e.v) sin - ((e.w) + (u.w) cos + (v.w) sin)^2 / 2 */
+    double eu = prox_v3_dot(e, c->u), ev = prox_v3_dot(e, c->v);
+    double al = prox_v3_dot(e, w), be = prox_v3_dot(c->u, w), ga = prox_v3_dot(c->v, w);
+#define CL_G(x) (eu * (x).c + ev * (x).s - 0.5 * (al + be * (x).c + ga * (x).s) * (al + be * (x).c + ga * (x).s))
+    double dh, h = cl_h_cs(&k, a.c, a.s, &dh), g = CL_G(a);
+    for (int it = 0; it < 40 && h != 0.0; ++it) {
+        double step = dh > 0.0 ? h / dh : (h > 0.0 ? 0.5 : -0.5);
+        if (!(fabs(step) <= 0.5)) step = step > 0.0 ? 0.5 : -0.5;
+        int moved = 0;
+        for (int j = 0; j < 8 && !moved; ++j, step *= 0.5) {
+            prox_unit2 an = prox_unit2_step(a, step);
+            double dhn, hn = cl_h_cs(&k, an.c, an.s, &dhn), gn = CL_G(an);
+            if (gn < g || (fabs(step) <= 1e-7 && fabs(hn) < fabs(h))) {
+                a = an, h = hn, dh = dhn, g = gn, moved = 1;
+                break;
+            }
         }
-        if (fabs(step) <= 8.0 * DBL_EPSILON) break;
+        if (!moved || fabs(step) <= 8.0 * DBL_EPSILON) break;
     }
-    return best;
+#undef CL_G
+    return a;
 }
 
 int prox_circle_line_stationary(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, double th[4], int *count)

@@ -212,13 +212,19 @@ static void cand_rim_lat(query *q, const cyl *rc, int end, const cyl *lc, int ri
     rim_lat_offer(q, rc, end, lc, rim_is_a, a, cnt);
 }
 
-/* Fast path: Newton from the rim point nearest to the other axis (towards the axis' closest point
- * to the rim centre); certified afterwards like every candidate. */
-static void cand_rim_lat_local(query *q, const cyl *rc, int end, const cyl *lc, int rim_is_a)
+/* Fast path: Newton from the rim point extreme along dir (the predicted contact normal, pointing
+ * from the rim towards the side), or when dir is NULL from the rim point nearest to the other axis
+ * (towards the axis' closest point to the rim centre); certified afterwards like every candidate. */
+static void cand_rim_lat_local(query *q, const cyl *rc, int end, const cyl *lc, int rim_is_a, const prox_vec3 *dir)
 {
     const prox_fcircle *C = &rc->rim[end];
-    prox_vec3 d = prox_v3_sub(C->c, lc->b);
-    prox_vec3 g = prox_v3_neg(prox_v3_mad(d, -prox_v3_dot(d, lc->w), lc->w)); /* centre -> axis */
+    prox_vec3 g;
+    if (dir) {
+        g = *dir;
+    } else {
+        prox_vec3 d = prox_v3_sub(C->c, lc->b);
+        g = prox_v3_neg(prox_v3_mad(d, -prox_v3_dot(d, lc->w), lc->w)); /* centre -> axis */
+    }
     prox_unit2 th = prox_circle_line_local(C, lc->b, lc->w, prox_unit2_of(prox_v3_dot(g, C->u), prox_v3_dot(g, C->v)));
     rim_lat_offer(q, rc, end, lc, rim_is_a, &th, 1);
 }
@@ -455,7 +461,7 @@ static int nearest_end(double t, double h) { return t > 0.5 * h; }
 
 /* Agarwal's first level (Fig. 3): the case from the feet of P(S1,S2), the S-S candidate, and the
  * ends of each cylinder nearest to the feet. */
-static prox_agarwal_case classify(query *q, int *ea, int *eb)
+static prox_agarwal_case classify(query *q, int *ea, int *eb, double *s_out, double *t_out)
 {
     double s = 0.5 * q->A.h, t = 0.5 * q->B.h;
     prox_agarwal_case cs = PROX_CASE_NONE;
@@ -469,20 +475,22 @@ static prox_agarwal_case classify(query *q, int *ea, int *eb)
     }
     *ea = nearest_end(s, q->A.h);
     *eb = nearest_end(t, q->B.h);
+    *s_out = s, *t_out = t;
     return cs;
 }
 
 /* Rim against lateral surface unless it cannot produce a better candidate: its lower bound is not
  * below the best so far, or the rim's axial range along the other axis misses [0, h] (every
  * stationary point would then have its foot off the finite axis). */
-static void rim_lat_pruned(query *q, const cyl *rc, int end, const cyl *lc, int rim_is_a, int local)
+static void rim_lat_pruned(query *q, const cyl *rc, int end, const cyl *lc, int rim_is_a, int local,
+                           const prox_vec3 *dir)
 {
     const prox_fcircle *C = &rc->rim[end];
     double tc = prox_v3_dot(prox_v3_sub(C->c, lc->b), lc->w);
     double half = C->r * prox_v3_norm(prox_v3_cross(C->n, lc->w));
     if (tc + half < 0.0 || tc - half > lc->h) return;
     if (q->have_best && rim_lat_lower_bound(C, lc) >= q->best.d) return;
-    if (local) cand_rim_lat_local(q, rc, end, lc, rim_is_a);
+    if (local) cand_rim_lat_local(q, rc, end, lc, rim_is_a, dir);
     else cand_rim_lat(q, rc, end, lc, rim_is_a);
 }
 
@@ -492,8 +500,8 @@ static void hierarchy_groups(query *q, int ea, int eb, prox_agarwal_case cs)
 {
     if (cs == PROX_CASE_1) return; /* Case 1 ends at S-S */
     q->tag = 1;
-    rim_lat_pruned(q, &q->B, eb, &q->A, 0, 1);
-    rim_lat_pruned(q, &q->A, ea, &q->B, 1, 1);
+    rim_lat_pruned(q, &q->B, eb, &q->A, 0, 1, NULL);
+    rim_lat_pruned(q, &q->A, ea, &q->B, 1, 1, NULL);
     cand_rim_disk(q, &q->A, ea, &q->B, eb, 1);
     cand_rim_disk(q, &q->B, eb, &q->A, ea, 0);
     q->tag = 0;
@@ -504,13 +512,13 @@ static void hierarchy_groups(query *q, int ea, int eb, prox_agarwal_case cs)
 static void closed_form_groups(query *q, int ea, int eb, prox_agarwal_case cs, int local)
 {
     if (cs == PROX_CASE_1 || !local) {
-        rim_lat_pruned(q, &q->B, eb, &q->A, 0, local);
-        rim_lat_pruned(q, &q->A, ea, &q->B, 1, local);
+        rim_lat_pruned(q, &q->B, eb, &q->A, 0, local, NULL);
+        rim_lat_pruned(q, &q->A, ea, &q->B, 1, local, NULL);
         cand_rim_disk(q, &q->A, ea, &q->B, eb, 1);
         cand_rim_disk(q, &q->B, eb, &q->A, ea, 0);
     }
-    rim_lat_pruned(q, &q->B, !eb, &q->A, 0, local);
-    rim_lat_pruned(q, &q->A, !ea, &q->B, 1, local);
+    rim_lat_pruned(q, &q->B, !eb, &q->A, 0, local, NULL);
+    rim_lat_pruned(q, &q->A, !ea, &q->B, 1, local, NULL);
     for (int k = 1; k < 4; ++k) {
         int a = k < 2 ? ea : !ea, b = (k % 2) == 0 ? eb : !eb;
         cand_rim_disk(q, &q->A, a, &q->B, b, 1);
@@ -540,6 +548,101 @@ static prox_status rim_rim_groups(query *q, int ea0, int eb0, prox_agarwal_case 
     }
     q->tag = 0;
     return PROX_OK;
+}
+
+/* ---- prediction: the features that support a normal ---- */
+
+/* Feature classes of a cylinder supporting a direction. */
+enum { SUP_LAT, SUP_RIM, SUP_DISK };
+
+/* Which feature of k supports the unit direction n (its maximiser over k): the end disk when n is
+ * within about 0.5 degree of the axis, the lateral surface when within 0.5 degree of perpendicular,
+ * else the rim; *end is the end n points to, or for the lateral surface the end nearer to the point
+ * p of k that the normal came from.  Only a guess of the final features: the candidates it selects
+ * are certified like any other. */
+static int support_feature(const cyl *k, prox_vec3 n, prox_vec3 p, int *end)
+{
+    double t = prox_v3_dot(n, k->w);
+    *end = t > 0.0;
+    if (fabs(t) > 1.0 - 5e-5) return SUP_DISK;
+    if (fabs(t) >= 1e-2) return SUP_RIM;
+    *end = prox_v3_dot(prox_v3_sub(p, k->b), k->w) > 0.5 * k->h;
+    return SUP_LAT;
+}
+
+/* Evaluates the candidates of the ends that support n (A along n at pa, B along -n at pb): the
+ * closest pair of two disjoint convex solids is where their supporting features along the optimal
+ * normal meet, so a normal near the optimal one names the ends and the feature pair that decide.
+ * The predicted pair goes first, then the other pairs of the same two ends (rims against the disks,
+ * rim against rim, rims against the sides), each followed by the certificate.  Returns 1 when
+ * settled; *code identifies the ends (for the caller to notice a repeat).  `ha`, `hb`: the ends of
+ * Agarwal's hierarchy, to keep the result's hierarchy_exact flag faithful. */
+static int predicted_group(query *q, prox_vec3 n, prox_vec3 pa, prox_vec3 pb, int ha, int hb, int *code)
+{
+    int ea, eb;
+    prox_vec3 m = prox_v3_neg(n);
+    int fa = support_feature(&q->A, n, pa, &ea), fb = support_feature(&q->B, m, pb, &eb);
+    *code = ea * 2 + eb;
+    q->tag = ea == ha && eb == hb;
+    int done = 0, side = fa == SUP_LAT || fb == SUP_LAT;
+    if (side) { /* a side: the rims against the sides first */
+        rim_lat_pruned(q, &q->A, ea, &q->B, 1, 1, &n);
+        rim_lat_pruned(q, &q->B, eb, &q->A, 0, 1, &m);
+        done = settle(q);
+    }
+    if (!done) { /* the rims against the disks of the same ends: closed form, cheap */
+        cand_rim_disk(q, &q->A, ea, &q->B, eb, 1);
+        cand_rim_disk(q, &q->B, eb, &q->A, ea, 0);
+        done = settle(q);
+    }
+    if (!done) {
+        cand_rim_rim_local(q, ea, eb, n);
+        done = settle(q);
+    }
+    if (!done && !side) {
+        rim_lat_pruned(q, &q->A, ea, &q->B, 1, 1, &n);
+        rim_lat_pruned(q, &q->B, eb, &q->A, 0, 1, &m);
+        done = settle(q);
+    }
+    q->tag = 0;
+    return done;
+}
+
+/* Closest points of the two axis segments (clamped feet, Ericson's order): the capsule's closest
+ * points, the first guess of the contact (pa on A's axis, pb on B's). */
+static void capsule_points(const query *q, double s, double t, prox_vec3 *pa, prox_vec3 *pb)
+{
+    s = s < 0.0 ? 0.0 : (s > q->A.h ? q->A.h : s);
+    *pa = prox_v3_mad(q->A.b, s, q->A.w);
+    t = prox_v3_dot(prox_v3_sub(*pa, q->B.b), q->B.w);
+    t = t < 0.0 ? 0.0 : (t > q->B.h ? q->B.h : t);
+    *pb = prox_v3_mad(q->B.b, t, q->B.w);
+    s = prox_v3_dot(prox_v3_sub(*pb, q->A.b), q->A.w);
+    s = s < 0.0 ? 0.0 : (s > q->A.h ? q->A.h : s);
+    *pa = prox_v3_mad(q->A.b, s, q->A.w);
+}
+
+/* The prediction phase: the ends supporting the capsule normal, then those supporting the best
+ * candidate's normal, until certified or the ends repeat (at most three rounds).  1 when settled. */
+static int predict(query *q, double s, double t, int ha, int hb)
+{
+    prox_vec3 pa, pb;
+    capsule_points(q, s, t, &pa, &pb);
+    prox_vec3 n = prox_v3_sub(pb, pa);
+    double l = prox_v3_norm(n);
+    if (!(l > 0.0)) n = prox_v3_sub(q->B.c, q->A.c), l = prox_v3_norm(n);
+    if (!(l > 0.0)) return 0;
+    n = prox_v3_scale(n, 1.0 / l);
+    int tried = 0;
+    for (int round = 0; round < 3; ++round) {
+        int code;
+        if (predicted_group(q, n, pa, pb, ha, hb, &code)) return 1;
+        if (!q->have_best || (tried >> code & 1)) return 0;
+        tried |= 1 << code;
+        n = q->best.n, pa = q->best.p1, pb = q->best.p2;
+        if ((tried >> 0 & 1) + (tried >> 1 & 1) + (tried >> 2 & 1) + (tried >> 3 & 1) == 4) return 0;
+    }
+    return 0;
 }
 
 /* 1 when one of the cheap directions of Eberly's first tests (the centre line, either axis, their
@@ -601,8 +704,10 @@ static int is_point_set(const query *q)
 
 /* Steps 5-6 of the file comment: candidate groups cheapest first, each followed by the certificate;
  * then the overlap decisions.  Leaves either q->overlap with a common point or a best candidate. */
-static prox_status search(query *q, const prox_rcc *a, const prox_rcc *b, prox_agarwal_case cs, int ea, int eb)
+static prox_status search(query *q, const prox_rcc *a, const prox_rcc *b, prox_agarwal_case cs, int ea, int eb,
+                          double s, double t)
 {
+    if (!settle(q) && !q->parallel && predict(q, s, t, ea, eb)) return PROX_OK;
     if (!settle(q) && cs != PROX_CASE_1) hierarchy_groups(q, ea, eb, cs);
     if (!settle(q)) closed_form_groups(q, ea, eb, cs, 1); /* fast path: local Newton */
     if (!settle(q)) rim_rim_groups(q, ea, eb, cs, 0);
@@ -667,8 +772,9 @@ PROX_API prox_rcc_result prox_rcc_distance(const prox_rcc *a, const prox_rcc *b)
     else if (cyl_contains(&q.A, q.B.c, 0.0)) note_common(&q, q.B.c);
 
     int ea, eb;
-    res.agarwal = classify(&q, &ea, &eb); /* step 2 */
-    if ((res.status = search(&q, a, b, res.agarwal, ea, eb)) != PROX_OK) return res;
+    double s, t;
+    res.agarwal = classify(&q, &ea, &eb, &s, &t); /* step 2 */
+    if ((res.status = search(&q, a, b, res.agarwal, ea, eb, s, t)) != PROX_OK) return res;
     if (q.overlap) {
         containment(&q, &res);
         fill_overlap(&q, &res, origin);
