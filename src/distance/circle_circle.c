@@ -124,6 +124,8 @@ prox_unit2 prox_circle_circle_local(const prox_fcircle *a, const prox_fcircle *b
     for (int it = 0; it < 50 && !e.axis && e.h != 0.0; ++it) {
         double step = e.dh > 0.0 ? e.h / e.dh : (e.h > 0.0 ? 0.5 : -0.5);
         if (!(fabs(step) <= 0.5)) step = step > 0.0 ? 0.5 : -0.5;
+        /* A Newton step below 1e-9 rad leaves an error of order step^2: take it and stop. */
+        if (e.dh > 0.0 && fabs(step) <= 1e-9) return prox_unit2_step(u, step);
         int moved = 0;
         for (int k = 0; k < 8 && !moved; ++k, step *= 0.5) {
             prox_unit2 un = prox_unit2_step(u, step);
@@ -132,8 +134,9 @@ prox_unit2 prox_circle_circle_local(const prox_fcircle *a, const prox_fcircle *b
                 u = un, e = en, moved = 1;
                 break;
             }
+            if (fabs(step) <= 1e-7) break; /* quadratic regime: no decrease means converged */
         }
-        if (!moved || fabs(step) <= 4.0 * DBL_EPSILON) break;
+        if (!moved) break;
     }
     return u;
 }

@@ -122,6 +122,8 @@ prox_unit2 prox_circle_line_local(const prox_fcircle *c, prox_vec3 p, prox_vec3 
     for (int it = 0; it < 40 && h != 0.0; ++it) {
         double step = dh > 0.0 ? h / dh : (h > 0.0 ? 0.5 : -0.5);
         if (!(fabs(step) <= 0.5)) step = step > 0.0 ? 0.5 : -0.5;
+        /* A Newton step below 1e-9 rad leaves an error of order step^2: take it and stop. */
+        if (dh > 0.0 && fabs(step) <= 1e-9) return prox_unit2_step(a, step);
         int moved = 0;
         for (int j = 0; j < 8 && !moved; ++j, step *= 0.5) {
             prox_unit2 an = prox_unit2_step(a, step);
@@ -130,8 +132,9 @@ prox_unit2 prox_circle_line_local(const prox_fcircle *c, prox_vec3 p, prox_vec3 
                 a = an, h = hn, dh = dhn, g = gn, moved = 1;
                 break;
             }
+            if (fabs(step) <= 1e-7) break; /* quadratic regime: no decrease means converged */
         }
-        if (!moved || fabs(step) <= 8.0 * DBL_EPSILON) break;
+        if (!moved) break;
     }
 #undef CL_G
     return a;

@@ -64,18 +64,37 @@ typedef struct query {
     double gap;       /* the best separation seen along the best candidate's normal */
 } query;
 
-static void cyl_init(cyl *k, const prox_rcc *c, prox_vec3 origin)
+/* Prepares c (already validated; h = |axis|).  The rims' frame is Duff et al.'s branch-free
+ * orthonormal basis of the axis ("Building an orthonormal basis, revisited", JCGT 2017): no square
+ * root, which prox_fcircle_make's any_perp needs; any frame serves, angles stay internal. */
+static void cyl_init(cyl *k, const prox_rcc *c, double h, prox_vec3 origin)
 {
-    k->h = prox_v3_norm(c->axis);
-    k->w = prox_v3_scale(c->axis, 1.0 / k->h);
+    k->h = h;
+    k->w = prox_v3_scale(c->axis, 1.0 / h);
     k->r = c->radius;
     k->b = prox_v3_sub(c->base, origin);
-    k->c = prox_v3_mad(k->b, 0.5 * k->h, k->w);
+    k->c = prox_v3_mad(k->b, 0.5 * h, k->w);
     k->cap[0] = k->b;
-    k->cap[1] = prox_v3_mad(k->b, k->h, k->w);
-    k->rim[0] = prox_fcircle_make(k->cap[0], k->w, k->r);
-    k->rim[1] = k->rim[0]; /* same frame, other centre */
+    k->cap[1] = prox_v3_mad(k->b, h, k->w);
+    prox_vec3 n = k->w;
+    double sg = copysign(1.0, n.z), a = -1.0 / (sg + n.z), bb = n.x * n.y * a;
+    prox_fcircle f;
+    f.c = k->cap[0];
+    f.n = n;
+    f.u = prox_v3(1.0 + sg * n.x * n.x * a, sg * bb, -sg * n.x);
+    f.v = prox_v3_cross(n, f.u);
+    f.r = k->r;
+    k->rim[0] = f;
+    k->rim[1] = f; /* same frame, other centre */
     k->rim[1].c = k->cap[1];
+}
+
+/* Validation of an RCC that also returns its height (the public validator plus the norm it takes). */
+static prox_status rcc_check(const prox_rcc *c, double *h)
+{
+    prox_status st = prox_rcc_validate(c);
+    *h = st == PROX_OK ? prox_v3_norm(c->axis) : 0.0;
+    return st;
 }
 
 /* Support function of a prepared cylinder (see rcc_support.c; same formula, prepared data). */
@@ -707,6 +726,14 @@ static int is_point_set(const query *q)
 static prox_status search(query *q, const prox_rcc *a, const prox_rcc *b, prox_agarwal_case cs, int ea, int eb,
                           double s, double t)
 {
+    if (cs == PROX_CASE_1 && q->have_best && !q->overlap) {
+        /* Case 1 (both feet of the common perpendicular on the finite axes) with the axes farther
+         * apart than rA + rB: the infinite solid cylinders are at distance L - rA - rB, the finite
+         * ones contain the S-S pair at that distance, so S-S is the minimum (Agarwal Sec. 2); the
+         * bound needs no certificate. */
+        q->lower = q->best.d;
+        return PROX_OK;
+    }
     if (!settle(q) && !q->parallel && predict(q, s, t, ea, eb)) return PROX_OK;
     if (!settle(q) && cs != PROX_CASE_1) hierarchy_groups(q, ea, eb, cs);
     if (!settle(q)) closed_form_groups(q, ea, eb, cs, 1); /* fast path: local Newton */
@@ -754,15 +781,21 @@ static void fill_disjoint(const query *q, prox_rcc_result *res, prox_vec3 origin
 PROX_API prox_rcc_result prox_rcc_distance(const prox_rcc *a, const prox_rcc *b)
 {
     prox_rcc_result res = {0};
-    if ((res.status = prox_rcc_validate(a)) != PROX_OK) return res;
-    if ((res.status = prox_rcc_validate(b)) != PROX_OK) return res;
+    double ha, hb;
+    if ((res.status = rcc_check(a, &ha)) != PROX_OK) return res;
+    if ((res.status = rcc_check(b, &hb)) != PROX_OK) return res;
 
-    /* Step 1: both cylinders prepared relative to A's centre. */
+    /* Step 1: both cylinders prepared relative to A's centre.  Only the flags are cleared: the
+     * cylinders are filled by cyl_init, the candidate is read only once have_best is set. */
     prox_vec3 origin = prox_v3_mad(a->base, 0.5, a->axis);
-    query q = {0};
-    cyl_init(&q.A, a, origin);
-    cyl_init(&q.B, b, origin);
-    q.scale = fmax(fmax(prox_v3_norm(prox_v3_sub(q.B.c, q.A.c)), fmax(q.A.h, q.B.h)), fmax(q.A.r, q.B.r));
+    query q;
+    q.have_best = q.overlap = q.tag = q.best_gap_done = 0;
+    cyl_init(&q.A, a, ha, origin);
+    cyl_init(&q.B, b, hb, origin);
+    double sc = prox_v3_norm(prox_v3_sub(q.B.c, q.A.c));
+    double dims[4] = {q.A.h, q.B.h, q.A.r, q.B.r};
+    for (int i = 0; i < 4; ++i) sc = dims[i] > sc ? dims[i] : sc;
+    q.scale = sc;
     q.eps = 64.0 * DBL_EPSILON * q.scale;
     q.lower = q.gap = -INFINITY;
     q.parallel = prox_v3_norm2(prox_v3_cross(q.A.w, q.B.w)) <= 1e-30;
