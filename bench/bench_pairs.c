@@ -151,9 +151,45 @@ bench_accuracy bench_method_accuracy(const bench_method *m, const bench_pairs *P
     return acc;
 }
 
+/* A contiguous copy of the subset idx[0..n-1] of P (same name), made once per (P, idx) and kept
+ * until exit: a subset is timed on its own array, so that its figure is the cost of its queries and
+ * not the cache misses of reading a few pairs scattered over the whole set. */
+static const bench_pairs *gathered(const bench_pairs *P, const size_t *idx, size_t n)
+{
+    static struct {
+        const bench_pairs *P;
+        const size_t *idx;
+        bench_pairs *G;
+    } cache[64];
+    static int ncache;
+    for (int k = 0; k < ncache; ++k)
+        if (cache[k].P == P && cache[k].idx == idx) return cache[k].G;
+    bench_pairs *G = bench_xmalloc(sizeof *G);
+    memset(G, 0, sizeof *G);
+    G->name = P->name;
+    G->n = n;
+    G->a = bench_xmalloc((n ? n : 1) * sizeof *G->a);
+    G->b = bench_xmalloc((n ? n : 1) * sizeof *G->b);
+    if (P->sd_ref) G->sd_ref = bench_xmalloc((n ? n : 1) * sizeof *G->sd_ref);
+    if (P->ref) G->ref = bench_xmalloc((n ? n : 1) * sizeof *G->ref);
+    if (P->scale) G->scale = bench_xmalloc((n ? n : 1) * sizeof *G->scale);
+    if (P->family) G->family = bench_xmalloc((n ? n : 1) * sizeof *G->family);
+    for (size_t i = 0; i < n; ++i) {
+        size_t j = idx[i];
+        G->a[i] = P->a[j], G->b[i] = P->b[j];
+        if (G->sd_ref) G->sd_ref[i] = P->sd_ref[j];
+        if (G->ref) G->ref[i] = P->ref[j];
+        if (G->scale) G->scale[i] = P->scale[j];
+        if (G->family) G->family[i] = P->family[j];
+    }
+    if (ncache < 64) cache[ncache].P = P, cache[ncache].idx = idx, cache[ncache++].G = G;
+    return G;
+}
+
 bench_case *bench_add_method(const char *prefix, const bench_method *m, const bench_pairs *P, const size_t *idx,
                              size_t n, const char *suffix)
 {
+    if (idx) P = gathered(P, idx, n), idx = NULL;
     char name[96];
     snprintf(name, sizeof name, "%s/%s/%s%s", prefix, m->name, P->name, suffix ? suffix : "");
     method_binding *b = bench_xmalloc(sizeof *b); /* lives until exit */

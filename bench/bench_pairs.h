@@ -47,7 +47,8 @@ typedef struct bench_method {
 } bench_method;
 
 /* Registers the case "<prefix>/<method>/<set><suffix>" timing the method on the pairs (a subset when
- * idx != NULL) and, when the set has a reference, its accuracy on those pairs. */
+ * idx != NULL, copied once to a contiguous array so that scattered reads do not count) and, when the
+ * set has a reference, its accuracy on those pairs. */
 bench_case *bench_add_method(const char *prefix, const bench_method *m, const bench_pairs *P, const size_t *idx,
                              size_t n, const char *suffix);
 

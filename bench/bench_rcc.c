@@ -45,7 +45,10 @@ static const struct {
     const char *name;
 } k_cases[] = {{PROX_CASE_1, "case1"},     {PROX_CASE_2_1, "case2.1"}, {PROX_CASE_2_2, "case2.2"},
                {PROX_CASE_3, "case3"},     {PROX_CASE_NONE, "case-none"}};
-static const char *const k_pairs[] = {"none", "SS", "CS", "DS", "CD", "DD", "CC", "overlap"};
+/* Names of prox_pair_kind, indexed by its value. */
+enum { NPAIR = PROX_PAIR_OVERLAP + 1 };
+static const char *const k_pairs[NPAIR] = {[PROX_PAIR_NONE] = "none", [PROX_PAIR_SS] = "SS", [PROX_PAIR_CS] = "CS",
+                                           [PROX_PAIR_CD] = "CD",     [PROX_PAIR_CC] = "CC", [PROX_PAIR_OVERLAP] = "overlap"};
 
 /* The distance query per Agarwal case and per closest primitive pair, with the case distribution
  * within near and far field written in the notes (compare the paper's Fig. 10). */
@@ -53,16 +56,16 @@ static void add_distance_classes(const bench_opts *o, const bench_pairs *P, cons
 {
     if (!bench_selected(o, "rcc/prox-distance/agarwal/")) return;
     size_t ncase = sizeof k_cases / sizeof k_cases[0];
-    subset cs[5], ps[8];
+    subset cs[5], ps[NPAIR];
     size_t cnt[5][2] = {{0}}, nnear = 0;
     for (size_t k = 0; k < ncase; ++k) cs[k] = subset_alloc(P->n);
-    for (size_t k = 0; k < 8; ++k) ps[k] = subset_alloc(P->n);
+    for (size_t k = 0; k < NPAIR; ++k) ps[k] = subset_alloc(P->n);
     for (size_t i = 0; i < P->n; ++i) {
         prox_rcc_result r = prox_rcc_distance(&P->a[i], &P->b[i]);
         nnear += (size_t)is_near[i];
         for (size_t k = 0; k < ncase; ++k)
             if ((int)r.agarwal == k_cases[k].code) cs[k].idx[cs[k].n++] = i, ++cnt[k][is_near[i] ? 0 : 1];
-        if ((unsigned)r.pair < 8) ps[r.pair].idx[ps[r.pair].n++] = i;
+        if ((unsigned)r.pair < NPAIR) ps[r.pair].idx[ps[r.pair].n++] = i;
     }
     char sfx[64];
     for (size_t k = 0; k < ncase; ++k) {
@@ -71,7 +74,7 @@ static void add_distance_classes(const bench_opts *o, const bench_pairs *P, cons
         bench_note(c, "share_all=%.2f%%;share_near=%.2f%%;share_far=%.2f%%", 100.0 * (double)cs[k].n / (double)P->n,
                    100.0 * (double)cnt[k][0] / (double)nnear, 100.0 * (double)cnt[k][1] / (double)(P->n - nnear));
     }
-    for (size_t k = 0; k < 8; ++k) {
+    for (size_t k = 0; k < NPAIR; ++k) {
         if (!ps[k].n) continue;
         snprintf(sfx, sizeof sfx, "/pair-%s", k_pairs[k]);
         bench_case *c = bench_add_method("rcc", &bench_prox_distance_method, P, ps[k].idx, ps[k].n, sfx);

@@ -89,12 +89,24 @@ static void cyl_init(cyl *k, const prox_rcc *c, double h, prox_vec3 origin)
     k->rim[1].c = k->cap[1];
 }
 
-/* Validation of an RCC that also returns its height (the public validator plus the norm it takes). */
+/* Validation of an RCC that also returns its height.  The fast test accepts exactly what
+ * prox_rcc_validate accepts (every coordinate within the supported range, which NaN and infinities
+ * fail; radius and height within [PROX_MIN_SIZE, PROX_MAX_COORD]); a rejected cylinder goes through
+ * the validator for the status naming the fault. */
 static prox_status rcc_check(const prox_rcc *c, double *h)
 {
+    *h = 0.0;
+    if (!c) return PROX_EINVAL_ARG;
+    const double M = PROX_MAX_COORD;
+    int ok = (fabs(c->base.x) <= M) & (fabs(c->base.y) <= M) & (fabs(c->base.z) <= M) & (fabs(c->axis.x) <= M) &
+             (fabs(c->axis.y) <= M) & (fabs(c->axis.z) <= M) & (c->radius >= PROX_MIN_SIZE) & (c->radius <= M);
+    double hh = ok ? prox_v3_norm(c->axis) : 0.0;
+    if (ok && hh >= PROX_MIN_SIZE && hh <= M) {
+        *h = hh;
+        return PROX_OK;
+    }
     prox_status st = prox_rcc_validate(c);
-    *h = st == PROX_OK ? prox_v3_norm(c->axis) : 0.0;
-    return st;
+    return st != PROX_OK ? st : PROX_EINVAL_RANGE; /* unreachable: the two tests agree */
 }
 
 /* Support function of a prepared cylinder (see rcc_support.c; same formula, prepared data). */
@@ -303,17 +315,23 @@ static void rim_rim_offer(query *q, int ea, int eb, prox_unit2 th)
     const prox_fcircle *CA = &q->A.rim[ea], *CB = &q->B.rim[eb];
     prox_vec3 x = prox_fcircle_at(CA, th);
     prox_vec3 y = prox_fcircle_closest(CB, x, NULL);
-    /* Normal from the two tangents (accurate when |y - x| is tiny); else from the points. */
-    prox_vec3 ta = prox_v3_add(prox_v3_scale(CA->u, -th.s), prox_v3_scale(CA->v, th.c));
-    prox_vec3 tb = prox_v3_cross(CB->n, prox_v3_sub(y, CB->c));
-    prox_vec3 n = prox_v3_cross(ta, tb);
-    double nl = prox_v3_norm(n), tbl = prox_v3_norm(tb);
-    prox_vec3 yx = prox_v3_sub(y, x);
-    if (nl > 1e-6 * tbl) {
-        n = prox_v3_scale(n, 1.0 / nl);
-        if (prox_v3_dot(n, yx) < 0.0) n = prox_v3_neg(n);
+    /* Normal from the points when they are well apart (direction error ~ eps S / d); else from the
+     * two tangents, which stays accurate when |y - x| is tiny. */
+    prox_vec3 yx = prox_v3_sub(y, x), n;
+    double d = prox_v3_norm(yx);
+    if (d > 1e-4 * q->scale) {
+        n = prox_v3_scale(yx, 1.0 / d);
     } else {
-        n = prox_v3_normalize(yx);
+        prox_vec3 ta = prox_v3_add(prox_v3_scale(CA->u, -th.s), prox_v3_scale(CA->v, th.c));
+        prox_vec3 tb = prox_v3_cross(CB->n, prox_v3_sub(y, CB->c));
+        n = prox_v3_cross(ta, tb);
+        double nl = prox_v3_norm(n), tbl = prox_v3_norm(tb);
+        if (nl > 1e-6 * tbl) {
+            n = prox_v3_scale(n, 1.0 / nl);
+            if (prox_v3_dot(n, yx) < 0.0) n = prox_v3_neg(n);
+        } else {
+            n = prox_v3_normalize(yx);
+        }
     }
     offer(q, x, y, n, PROX_PAIR_CC, rim_feature(ea), rim_feature(eb));
 }
@@ -406,6 +424,13 @@ static int circle_in_cyl(const prox_fcircle *C, const cyl *k, double tol)
     double rho_c = prox_v3_norm(prox_v3_mad(dc, -prox_v3_dot(dc, k->w), k->w));
     if (rho_c + C->r <= k->r + tol) return 1;
     if (fmax(rho_c, C->r) > k->r + tol) return 0;
+    /* Support function along the radial direction m of the centre (perpendicular to k's axis): the
+     * circle reaches rho_c + r |m x n| from the axis there; beyond r it is not inside.  Decides most
+     * protruding circles before the quartic. */
+    if (rho_c > 0.0) {
+        prox_vec3 m = prox_v3_scale(prox_v3_mad(dc, -prox_v3_dot(dc, k->w), k->w), 1.0 / rho_c);
+        if (rho_c + C->r * prox_v3_norm(prox_v3_cross(m, C->n)) > k->r + tol) return 0;
+    }
     double th[4];
     int cnt = 0;
     if (prox_circle_line_stationary(C, k->b, k->w, th, &cnt)) {
