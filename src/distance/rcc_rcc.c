@@ -62,11 +62,10 @@ typedef struct query {
     double lower;     /* max of gap(n) over the normals evaluated so far (a lower bound) */
     int best_gap_done; /* the best candidate's own directions are already in `lower` */
     double gap;       /* the best separation seen along the best candidate's normal */
+    int rims;         /* the rims of A and B are prepared (cyl_rims) */
 } query;
 
-/* Prepares c (already validated; h = |axis|).  The rims' frame is Duff et al.'s branch-free
- * orthonormal basis of the axis ("Building an orthonormal basis, revisited", JCGT 2017): no square
- * root, which prox_fcircle_make's any_perp needs; any frame serves, angles stay internal. */
+/* Prepares c (already validated; h = |axis|) without its rims (cyl_rims). */
 static void cyl_init(cyl *k, const prox_rcc *c, double h, prox_vec3 origin)
 {
     k->h = h;
@@ -76,6 +75,13 @@ static void cyl_init(cyl *k, const prox_rcc *c, double h, prox_vec3 origin)
     k->c = prox_v3_mad(k->b, 0.5 * h, k->w);
     k->cap[0] = k->b;
     k->cap[1] = prox_v3_mad(k->b, h, k->w);
+}
+
+/* The rims of a prepared cylinder (needed past Case 1 only).  Their frame is Duff et al.'s
+ * branch-free orthonormal basis of the axis ("Building an orthonormal basis, revisited", JCGT 2017):
+ * no square root, which prox_fcircle_make's any_perp needs; any frame serves, angles stay internal. */
+static void cyl_rims(cyl *k)
+{
     prox_vec3 n = k->w;
     double sg = copysign(1.0, n.z), a = -1.0 / (sg + n.z), bb = n.x * n.y * a;
     prox_fcircle f;
@@ -87,6 +93,15 @@ static void cyl_init(cyl *k, const prox_rcc *c, double h, prox_vec3 origin)
     k->rim[0] = f;
     k->rim[1] = f; /* same frame, other centre */
     k->rim[1].c = k->cap[1];
+}
+
+/* Prepares the rims of both cylinders once. */
+static void need_rims(query *q)
+{
+    if (q->rims) return;
+    cyl_rims(&q->A);
+    cyl_rims(&q->B);
+    q->rims = 1;
 }
 
 /* Validation of an RCC that also returns its height.  The fast test accepts exactly what
@@ -716,6 +731,7 @@ static void fill_overlap(const query *q, prox_rcc_result *res, prox_vec3 origin)
 /* Decides containment and, for nested pairs, reports the inner centre as the common point. */
 static void containment(query *q, prox_rcc_result *res)
 {
+    need_rims(q);
     double tol = 0.0;
     if (cyl_contains(&q->B, q->A.c, tol)) res->a_in_b = cyl_in_cyl(&q->A, &q->B, tol);
     if (cyl_contains(&q->A, q->B.c, tol)) res->b_in_a = cyl_in_cyl(&q->B, &q->A, tol);
@@ -759,6 +775,7 @@ static prox_status search(query *q, const prox_rcc *a, const prox_rcc *b, prox_a
         q->lower = q->best.d;
         return PROX_OK;
     }
+    need_rims(q);
     if (!settle(q) && !q->parallel && predict(q, s, t, ea, eb)) return PROX_OK;
     if (!settle(q) && cs != PROX_CASE_1) hierarchy_groups(q, ea, eb, cs);
     if (!settle(q)) closed_form_groups(q, ea, eb, cs, 1); /* fast path: local Newton */
@@ -814,7 +831,7 @@ PROX_API prox_rcc_result prox_rcc_distance(const prox_rcc *a, const prox_rcc *b)
      * cylinders are filled by cyl_init, the candidate is read only once have_best is set. */
     prox_vec3 origin = prox_v3_mad(a->base, 0.5, a->axis);
     query q;
-    q.have_best = q.overlap = q.tag = q.best_gap_done = 0;
+    q.have_best = q.overlap = q.tag = q.best_gap_done = q.rims = 0;
     cyl_init(&q.A, a, ha, origin);
     cyl_init(&q.B, b, hb, origin);
     double sc = prox_v3_norm(prox_v3_sub(q.B.c, q.A.c));
