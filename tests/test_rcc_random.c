@@ -1,6 +1,7 @@
 /* Large seeded sweeps of the RCC-RCC distance against independent truths: the stress generator's
  * constructed exact distances (bench/stress_gen.h: a separating slab between support points) over
- * all its families, and the certified separating-axis verdict (src/sat) on Agarwal's protocol.
+ * all its families, the certified separating-axis verdict (src/sat) on Agarwal's protocol, and the
+ * containment flags against a brute-force maximisation.
  * Rare failures (1 in 1e4 pairs) were found only at this size: keep it large. */
 #include "test_util.h"
 #include "prox/sat.h"
@@ -53,12 +54,99 @@ static void test_rcc_random_verdict(void **state)
     assert_int_equal(bad, 0);
 }
 
+/* Brute-force containment of circle (c, n, r) in the solid cylinder k: the axial range is exact
+ * (t_c +- r |n x w|); the largest distance from k's axis is maximised over 4096 angles and refined by
+ * golden section.  *margin is how far the decision is from flipping (min over both tests). */
+static int circle_inside_brute(prox_vec3 c, prox_vec3 n, double r, const prox_rcc *k, double *margin)
+{
+    double h = prox_v3_norm(k->axis);
+    prox_vec3 w = prox_v3_scale(k->axis, 1.0 / h);
+    prox_vec3 u = prox_v3_any_perp(n), v = prox_v3_cross(n, u);
+    double tc = prox_v3_dot(prox_v3_sub(c, k->base), w), half = r * prox_v3_norm(prox_v3_cross(n, w));
+    double ax = fmin(tc - half, h - (tc + half)); /* >= 0 inside */
+#define RHO(th)                                                                                                  \
+    (prox_v3_norm(prox_v3_reject(                                                                                \
+        prox_v3_sub(prox_v3_add(c, prox_v3_add(prox_v3_scale(u, r * cos(th)), prox_v3_scale(v, r * sin(th)))),   \
+                    k->base),                                                                                    \
+        w)))
+    const int N = 4096;
+    double best = -1.0, bth = 0.0;
+    for (int i = 0; i < N; ++i) {
+        double th = 2.0 * PROX_PI * i / N, rho = RHO(th);
+        if (rho > best) best = rho, bth = th;
+    }
+    double lo = bth - 2.0 * PROX_PI / N, hi = bth + 2.0 * PROX_PI / N, g = 0.5 * (sqrt(5.0) - 1.0);
+    for (int it = 0; it < 80; ++it) {
+        double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
+        if (RHO(m1) > RHO(m2)) hi = m2;
+        else lo = m1;
+    }
+    double rmax = fmax(best, RHO(0.5 * (lo + hi)));
+#undef RHO
+    double rad = k->radius - rmax;
+    *margin = fmin(fabs(ax), fabs(rad));
+    return ax >= 0.0 && rad >= 0.0;
+}
+
+/* A inside B iff both rims of A are (B convex, A the hull of its rims). */
+static int rcc_inside_brute(const prox_rcc *a, const prox_rcc *b, double *margin)
+{
+    prox_vec3 n = prox_v3_normalize(a->axis);
+    double m0, m1;
+    int in0 = circle_inside_brute(a->base, n, a->radius, b, &m0);
+    int in1 = circle_inside_brute(prox_v3_add(a->base, a->axis), n, a->radius, b, &m1);
+    /* the margin that matters: the failing test's, or both when inside */
+    *margin = in0 && in1 ? fmin(m0, m1) : (!in0 && !in1 ? fmax(m0, m1) : (!in0 ? m0 : m1));
+    return in0 && in1;
+}
+
+/* Containment flags against the brute force, on a small cylinder placed where it is partly in, partly
+ * out of a large one (centres inside, random tilts and sizes): both outcomes are common there. */
+static void test_rcc_random_containment(void **state)
+{
+    (void)state;
+    sg_rng r = sg_seed(1122);
+    const int n = 4000;
+    int bad = 0, inside = 0, decided = 0;
+    for (int i = 0; i < n; ++i) {
+        double rb = 1.0 + 4.0 * sg_u(&r), hb = 2.0 + 8.0 * sg_u(&r);
+        prox_rcc big = {prox_v3(0, 0, 0), prox_v3_scale(sg_unit(&r), hb), rb};
+        double hb_ = prox_v3_norm(big.axis);
+        prox_vec3 w = prox_v3_scale(big.axis, 1.0 / hb_);
+        double ra = rb * (0.05 + 0.6 * sg_u(&r)), ha = hb * (0.05 + 0.6 * sg_u(&r));
+        prox_vec3 ca = prox_v3_add(prox_v3_scale(w, hb * sg_u(&r)), prox_v3_scale(sg_perp(&r, w), rb * sg_u(&r)));
+        prox_vec3 wa = sg_u(&r) < 0.3 ? sg_tilt(&r, w, sg_log(&r, 1e-6, 0.3)) : sg_unit(&r);
+        prox_rcc small = {prox_v3_mad(ca, -0.5 * ha, wa), prox_v3_scale(wa, ha), ra};
+        double S = prox_rcc_pair_scale(&small, &big), m_ab, m_ba;
+        int ab = rcc_inside_brute(&small, &big, &m_ab), ba = rcc_inside_brute(&big, &small, &m_ba);
+        prox_rcc_result d1 = prox_rcc_distance(&small, &big), d2 = prox_rcc_distance(&big, &small);
+        assert_int_equal(d1.status, PROX_OK);
+        if (m_ab > 1e-9 * S) {
+            ++decided;
+            inside += ab;
+            if (d1.a_in_b != ab || d2.b_in_a != ab) {
+                if (bad++ < 5)
+                    print_error("pair %d: A in B brute %d, prox %d / %d (margin %.3g S)\n", i, ab, d1.a_in_b,
+                                d2.b_in_a, m_ab / S);
+            }
+        }
+        if (m_ba > 1e-9 * S && (d1.b_in_a != ba || d2.a_in_b != ba) && bad++ < 5)
+            print_error("pair %d: B in A brute %d, prox %d\n", i, ba, d1.b_in_a);
+        if (ab) assert_true(d1.interfere && d1.distance == 0.0);
+    }
+    printf("# %d containment pairs, %d decided by the brute force (%d inside), mismatches %d\n", n, decided,
+           inside, bad);
+    assert_true(inside > decided / 10 && inside < decided - decided / 10); /* both outcomes exercised */
+    assert_int_equal(bad, 0);
+}
+
 int main(void)
 {
     test_init();
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_rcc_random_constructed),
         cmocka_unit_test(test_rcc_random_verdict),
+        cmocka_unit_test(test_rcc_random_containment),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
