@@ -210,6 +210,23 @@ static void cand_lat_lat(query *q, double s, double t)
         return;
     }
     u = prox_v3_scale(u, 1.0 / L);
+    /* Near-parallel axes leave the feet inaccurate along the axes (error ~ eps S / |wA x wB|), and a
+     * normal that is not perpendicular to an axis costs h |n.w| / 2 in the certificate.  So: the normal
+     * made perpendicular to both axes to rounding (alternate rejections), the line distance measured
+     * along it, and B's point put on that normal; used when it is a genuine point of B (its axial
+     * coordinate within B's height). */
+    prox_vec3 v = prox_v3_reject(prox_v3_reject(prox_v3_reject(u, q->A.w), q->B.w), q->A.w);
+    double vl = prox_v3_norm(v);
+    if (vl > 0.5) {
+        v = prox_v3_scale(v, 1.0 / vl);
+        double lv = prox_v3_dot(prox_v3_sub(q->B.b, q->A.b), v);
+        prox_vec3 p2 = prox_v3_mad(f1, lv - q->B.r, v);
+        double tp = prox_v3_dot(prox_v3_sub(p2, q->B.b), q->B.w);
+        if (lv > q->A.r + q->B.r && tp >= 0.0 && tp <= q->B.h) {
+            offer(q, prox_v3_mad(f1, q->A.r, v), p2, v, PROX_PAIR_SS, PROX_FEAT_LATERAL, PROX_FEAT_LATERAL);
+            return;
+        }
+    }
     offer(q, prox_v3_mad(f1, q->A.r, u), prox_v3_mad(f2, -q->B.r, u), u, PROX_PAIR_SS, PROX_FEAT_LATERAL,
           PROX_FEAT_LATERAL);
 }
@@ -767,11 +784,14 @@ static int is_point_set(const query *q)
 static prox_status search(query *q, const prox_rcc *a, const prox_rcc *b, prox_agarwal_case cs, int ea, int eb,
                           double s, double t)
 {
-    if (cs == PROX_CASE_1 && q->have_best && !q->overlap) {
+    if (cs == PROX_CASE_1 && q->have_best && !q->overlap &&
+        prox_v3_norm2(prox_v3_cross(q->A.w, q->B.w)) >= 1e-6) {
         /* Case 1 (both feet of the common perpendicular on the finite axes) with the axes farther
          * apart than rA + rB: the infinite solid cylinders are at distance L - rA - rB, the finite
          * ones contain the S-S pair at that distance, so S-S is the minimum (Agarwal Sec. 2); the
-         * bound needs no certificate. */
+         * bound needs no certificate.  Only where the feet are well conditioned (|wA x wB| >= 1e-3:
+         * their error is ~ eps S / |wA x wB|, and L's is second order in it); nearer to parallel the
+         * certificate below checks the S-S pair like any candidate. */
         q->lower = q->best.d;
         return PROX_OK;
     }
