@@ -795,6 +795,9 @@ static prox_status search(query *q, const prox_rcc *a, const prox_rcc *b, prox_a
         q->lower = q->best.d;
         return PROX_OK;
     }
+    /* Cheap overlap witnesses: either centre inside the other solid. */
+    if (cyl_contains(&q->B, q->A.c, 0.0)) note_common(q, q->A.c);
+    else if (cyl_contains(&q->A, q->B.c, 0.0)) note_common(q, q->B.c);
     need_rims(q);
     if (!settle(q) && !q->parallel && predict(q, s, t, ea, eb)) return PROX_OK;
     if (!settle(q) && cs != PROX_CASE_1) hierarchy_groups(q, ea, eb, cs);
@@ -861,10 +864,6 @@ PROX_API prox_rcc_result prox_rcc_distance(const prox_rcc *a, const prox_rcc *b)
     q.eps = 64.0 * DBL_EPSILON * q.scale;
     q.lower = q.gap = -INFINITY;
     q.parallel = prox_v3_norm2(prox_v3_cross(q.A.w, q.B.w)) <= 1e-30;
-
-    /* Cheap overlap witnesses first: either centre inside the other solid. */
-    if (cyl_contains(&q.B, q.A.c, 0.0)) note_common(&q, q.A.c);
-    else if (cyl_contains(&q.A, q.B.c, 0.0)) note_common(&q, q.B.c);
 
     int ea, eb;
     double s, t;
