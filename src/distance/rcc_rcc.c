@@ -661,10 +661,14 @@ static int predicted_group(query *q, prox_vec3 n, prox_vec3 pa, prox_vec3 pb, in
     *code = ea * 2 + eb;
     q->tag = ea == ha && eb == hb;
     int done = 0, side = fa == SUP_LAT || fb == SUP_LAT;
-    if (side) { /* a side: the rims against the sides first */
-        rim_lat_pruned(q, &q->A, ea, &q->B, 1, 1, &n);
-        rim_lat_pruned(q, &q->B, eb, &q->A, 0, 1, &m);
+    if (side) { /* a side: the rims against the sides first, the predicted side's first */
+        int b_first = fb == SUP_LAT || (fa != SUP_LAT && fabs(prox_v3_dot(n, q->B.w)) < fabs(prox_v3_dot(n, q->A.w)));
+        if (b_first) rim_lat_pruned(q, &q->A, ea, &q->B, 1, 1, &n);
+        else rim_lat_pruned(q, &q->B, eb, &q->A, 0, 1, &m);
         done = settle(q);
+        if (!done && b_first) rim_lat_pruned(q, &q->B, eb, &q->A, 0, 1, &m);
+        else if (!done) rim_lat_pruned(q, &q->A, ea, &q->B, 1, 1, &n);
+        done = done || settle(q);
     }
     if (!done) { /* the rims against the disks of the same ends: closed form, cheap */
         cand_rim_disk(q, &q->A, ea, &q->B, eb, 1);
