@@ -185,13 +185,21 @@ static void offer(query *q, prox_vec3 p1, prox_vec3 p2, prox_vec3 n, prox_pair_k
 
 /* Feet of the common perpendicular: s on A's axis, t on B's axis (lengths from the bases).
  * Uses n = wA x wB, s = ((bB-bA) x wB).n / |n|^2, t = ((bB-bA) x wA).n / |n|^2 (no 1 - (wA.wB)^2). */
-static void axis_feet(const query *q, double *s, double *t)
+static void axis_feet(const cyl *A, const cyl *B, prox_vec3 n, double nn, double *s, double *t)
 {
-    prox_vec3 n = prox_v3_cross(q->A.w, q->B.w);
-    double nn = prox_v3_norm2(n);
-    prox_vec3 d0 = prox_v3_sub(q->B.b, q->A.b);
-    *s = prox_v3_dot(prox_v3_cross(d0, q->B.w), n) / nn;
-    *t = prox_v3_dot(prox_v3_cross(d0, q->A.w), n) / nn;
+    prox_vec3 d0 = prox_v3_sub(B->b, A->b);
+    *s = prox_v3_dot(prox_v3_cross(d0, B->w), n) / nn;
+    *t = prox_v3_dot(prox_v3_cross(d0, A->w), n) / nn;
+}
+
+/* The common point chosen on a segment of length L from A's axis (f1) towards B's along unit u, when
+ * L <= rA + rB: at distance <= rA from f1 and <= rB from the other end, balanced between the two. */
+static prox_vec3 between_axes(prox_vec3 f1, prox_vec3 u, double L, double ra, double rb)
+{
+    double lo = L - rb > 0.0 ? L - rb : 0.0, hi = ra < L ? ra : L;
+    double a = 0.5 * (L + ra - rb);
+    a = a < lo ? lo : (a > hi ? hi : a);
+    return prox_v3_mad(f1, a, u);
 }
 
 /* S-S candidate when both feet lie on the finite axes; an overlap witness when the axes are closer
@@ -203,10 +211,7 @@ static void cand_lat_lat(query *q, double s, double t)
     prox_vec3 u = prox_v3_sub(f2, f1);
     double L = prox_v3_norm(u);
     if (L <= q->A.r + q->B.r) {
-        double lo = L - q->B.r > 0.0 ? L - q->B.r : 0.0, hi = q->A.r < L ? q->A.r : L;
-        double a = 0.5 * (L + q->A.r - q->B.r);
-        a = a < lo ? lo : (a > hi ? hi : a);
-        note_common(q, L > 0.0 ? prox_v3_mad(f1, a / L, u) : f1);
+        note_common(q, L > 0.0 ? between_axes(f1, prox_v3_scale(u, 1.0 / L), L, q->A.r, q->B.r) : f1);
         return;
     }
     u = prox_v3_scale(u, 1.0 / L);
@@ -445,24 +450,32 @@ static double rim_lat_lower_bound(const prox_fcircle *C, const cyl *lc)
 
 /* 1 when circle C lies in the closed solid cylinder k (within tol): its axial range within [0, h]
  * and its farthest point from k's axis (a stationary point of the circle-line distance) within r. */
-static int circle_in_cyl(const prox_fcircle *C, const cyl *k, double tol)
+/* The cheap tests of circle_in_cyl for the circle (centre c, unit normal n, radius r): 1 inside, 0
+ * not inside, -1 undecided (the quartic is needed). */
+static int circle_in_cyl_quick(prox_vec3 c, prox_vec3 n, double r, const cyl *k, double tol)
 {
-    double tc = prox_v3_dot(prox_v3_sub(C->c, k->b), k->w);
-    double half = C->r * prox_v3_norm(prox_v3_cross(C->n, k->w));
+    prox_vec3 dc = prox_v3_sub(c, k->b);
+    double tc = prox_v3_dot(dc, k->w);
+    double half = r * prox_v3_norm(prox_v3_cross(n, k->w));
     if (tc - half < -tol || tc + half > k->h + tol) return 0;
     /* Radially: the circle lies within rho_c + r of the axis and reaches at least max(rho_c, r)
      * (its projection is an ellipse of semi-major axis r centred rho_c from the axis). */
-    prox_vec3 dc = prox_v3_sub(C->c, k->b);
-    double rho_c = prox_v3_norm(prox_v3_mad(dc, -prox_v3_dot(dc, k->w), k->w));
-    if (rho_c + C->r <= k->r + tol) return 1;
-    if (fmax(rho_c, C->r) > k->r + tol) return 0;
+    prox_vec3 radial = prox_v3_mad(dc, -tc, k->w);
+    double rho_c = prox_v3_norm(radial);
+    if (rho_c + r <= k->r + tol) return 1;
+    if (fmax(rho_c, r) > k->r + tol) return 0;
     /* Support function along the radial direction m of the centre (perpendicular to k's axis): the
      * circle reaches rho_c + r |m x n| from the axis there; beyond r it is not inside.  Decides most
      * protruding circles before the quartic. */
-    if (rho_c > 0.0) {
-        prox_vec3 m = prox_v3_scale(prox_v3_mad(dc, -prox_v3_dot(dc, k->w), k->w), 1.0 / rho_c);
-        if (rho_c + C->r * prox_v3_norm(prox_v3_cross(m, C->n)) > k->r + tol) return 0;
-    }
+    if (rho_c > 0.0 && rho_c + r * prox_v3_norm(prox_v3_cross(prox_v3_scale(radial, 1.0 / rho_c), n)) > k->r + tol)
+        return 0;
+    return -1;
+}
+
+static int circle_in_cyl(const prox_fcircle *C, const cyl *k, double tol)
+{
+    int quick = circle_in_cyl_quick(C->c, C->n, C->r, k, tol);
+    if (quick >= 0) return quick;
     double th[4];
     int cnt = 0;
     if (prox_circle_line_stationary(C, k->b, k->w, th, &cnt)) {
@@ -542,7 +555,8 @@ static prox_agarwal_case classify(query *q, int *ea, int *eb, double *s_out, dou
     double s = 0.5 * q->A.h, t = 0.5 * q->B.h;
     prox_agarwal_case cs = PROX_CASE_NONE;
     if (!q->parallel) {
-        axis_feet(q, &s, &t);
+        prox_vec3 n = prox_v3_cross(q->A.w, q->B.w);
+        axis_feet(&q->A, &q->B, n, prox_v3_norm2(n), &s, &t);
         int on1 = s >= 0.0 && s <= q->A.h, on2 = t >= 0.0 && t <= q->B.h;
         cs = on1 && on2 ? PROX_CASE_1 : (on1 || on2 ? PROX_CASE_2_1 : PROX_CASE_3);
         q->tag = 1;
@@ -847,6 +861,60 @@ static void fill_disjoint(const query *q, prox_rcc_result *res, prox_vec3 origin
     res->point_set = is_point_set(q);
 }
 
+/* Containment of in in out by the cheap tests alone (Agarwal Fig. 2, as containment() decides it):
+ * 1 / 0, or -1 when a rim needs the quartic. */
+static int cyl_in_cyl_quick(const cyl *in, const cyl *out)
+{
+    if (!cyl_contains(out, in->c, 0.0)) return 0; /* a nested cylinder contains its centre */
+    int i0 = circle_in_cyl_quick(in->cap[0], in->w, in->r, out, 0.0);
+    if (i0 == 0) return 0;
+    int i1 = circle_in_cyl_quick(in->cap[1], in->w, in->r, out, 0.0);
+    if (i1 == 0) return 0;
+    return i0 < 0 || i1 < 0 ? -1 : 1;
+}
+
+/* Case 1 decided from the prepared cylinders alone, before the query state, the rims and the
+ * candidate machinery exist (Agarwal Sec. 2: both feet of the common perpendicular on the finite
+ * axes).  Disjoint: the S-S pair along the unit common normal is the minimum (the infinite solid
+ * cylinders are L - rA - rB apart, docs/errata.md 8).  Overlapping: the point between the axes is a
+ * common point, and containment needs only the cheap tests in most pairs.  Returns 0, leaving the
+ * general path to answer, when the axes are within 1e-3 rad of parallel (ill-conditioned feet), not
+ * in Case 1, or a test is undecided. */
+static int case1_fast(const cyl *A, const cyl *B, double scale, prox_vec3 origin, prox_rcc_result *res)
+{
+    prox_vec3 n = prox_v3_cross(A->w, B->w);
+    double nn = prox_v3_norm2(n), s, t;
+    if (!(nn >= 1e-6)) return 0;
+    axis_feet(A, B, n, nn, &s, &t);
+    if (!(s >= 0.0 && s <= A->h && t >= 0.0 && t <= B->h)) return 0;
+    double ln = sqrt(nn), sd = prox_v3_dot(prox_v3_sub(B->b, A->b), n) / ln, L = fabs(sd);
+    prox_vec3 v = prox_v3_scale(n, (sd < 0.0 ? -1.0 : 1.0) / ln), f1 = prox_v3_mad(A->b, s, A->w);
+    res->agarwal = PROX_CASE_1;
+    if (L > A->r + B->r) {
+        res->distance = L - A->r - B->r;
+        res->p1 = prox_v3_add(prox_v3_mad(f1, A->r, v), origin);
+        res->p2 = prox_v3_add(prox_v3_mad(f1, L - B->r, v), origin);
+        res->pair = PROX_PAIR_SS;
+        res->feature1 = res->feature2 = PROX_FEAT_LATERAL;
+        res->certificate_gap = res->distance;
+        res->hierarchy_exact = 1;
+        return 1;
+    }
+    prox_vec3 x = between_axes(f1, v, L, A->r, B->r);
+    double eps = 64.0 * DBL_EPSILON * scale;
+    if (!cyl_contains(A, x, eps) || !cyl_contains(B, x, eps)) return 0;
+    int ab = cyl_in_cyl_quick(A, B), ba = ab == 1 ? 0 : cyl_in_cyl_quick(B, A);
+    if (ab < 0 || ba < 0) return 0;
+    res->a_in_b = ab;
+    res->b_in_a = ba;
+    res->distance = 0.0;
+    res->p1 = res->p2 = prox_v3_add(ab ? A->c : (ba ? B->c : x), origin);
+    res->pair = PROX_PAIR_OVERLAP;
+    res->feature1 = res->feature2 = PROX_FEAT_INSIDE;
+    res->interfere = 1;
+    return 1;
+}
+
 PROX_API prox_rcc_result prox_rcc_distance(const prox_rcc *a, const prox_rcc *b)
 {
     prox_rcc_result res = {0};
@@ -858,12 +926,14 @@ PROX_API prox_rcc_result prox_rcc_distance(const prox_rcc *a, const prox_rcc *b)
      * cylinders are filled by cyl_init, the candidate is read only once have_best is set. */
     prox_vec3 origin = prox_v3_mad(a->base, 0.5, a->axis);
     query q;
-    q.have_best = q.overlap = q.tag = q.best_gap_done = q.rims = 0;
     cyl_init(&q.A, a, ha, origin);
     cyl_init(&q.B, b, hb, origin);
     double sc = prox_v3_norm(prox_v3_sub(q.B.c, q.A.c));
     double dims[4] = {q.A.h, q.B.h, q.A.r, q.B.r};
     for (int i = 0; i < 4; ++i) sc = dims[i] > sc ? dims[i] : sc;
+    if (case1_fast(&q.A, &q.B, sc, origin, &res)) return res;
+
+    q.have_best = q.overlap = q.tag = q.best_gap_done = q.rims = 0;
     q.scale = sc;
     q.eps = 64.0 * DBL_EPSILON * q.scale;
     q.lower = q.gap = -INFINITY;
