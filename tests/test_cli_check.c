@@ -179,6 +179,28 @@ static void test_check_bad_input(void **state)
     free(out);
 }
 
+/* A sphere crossing an axis-aligned cylinder sideways: the repositioning vector has exact zero
+ * components that the solver may produce as -0; neither the table nor the JSON prints "-0". */
+static void test_check_no_negative_zero(void **state)
+{
+    (void)state;
+    if (!have_cli()) skip();
+    char path[64], args[128], *out;
+    temp_deck("minus zero\n1 0 -1\n\n1 RCC 0 0 0 0 0 1 0.2\n2 SPH 0 0.4 0.5 0.3\n3 BOX 0 0 0 1 0 0 0 1 0 0 0 1\n\n",
+              path);
+    snprintf(args, sizeof args, "check %s", path);
+    assert_int_equal(run_cli(args, &out), 1);
+    assert_null(strstr(out, "-0,"));
+    assert_null(strstr(out, "-0)"));
+    free(out);
+    snprintf(args, sizeof args, "check %s --json", path);
+    assert_int_equal(run_cli(args, &out), 1);
+    assert_null(strstr(out, "-0,"));
+    assert_null(strstr(out, "-0]"));
+    free(out);
+    unlink(path);
+}
+
 int main(void)
 {
     test_init();
@@ -187,6 +209,7 @@ int main(void)
         cmocka_unit_test(test_check_clearance_and_all),
         cmocka_unit_test(test_check_clean_deck),
         cmocka_unit_test(test_check_bad_input),
+        cmocka_unit_test(test_check_no_negative_zero),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -72,7 +72,14 @@ static void json_string(FILE *f, const char *s)
     fputc('"', f);
 }
 
-static void json_vec(FILE *f, prox_vec3 v) { fprintf(f, "[%.17g, %.17g, %.17g]", v.x, v.y, v.z); }
+/* -0 prints as 0: adding +0.0 maps -0.0 to +0.0 and leaves every other value unchanged. */
+static prox_vec3 no_neg_zero(prox_vec3 v) { return prox_v3(v.x + 0.0, v.y + 0.0, v.z + 0.0); }
+
+static void json_vec(FILE *f, prox_vec3 v)
+{
+    v = no_neg_zero(v);
+    fprintf(f, "[%.17g, %.17g, %.17g]", v.x, v.y, v.z);
+}
 
 /* Notes of a list as JSON objects {"line": n, "<key>": text}. */
 static void json_notes(FILE *f, const prox_deck_note *n, size_t count, const char *key)
@@ -147,7 +154,11 @@ static void write_json(FILE *f, const check_run *run)
 }
 
 /* "(x, y, z)" with a fixed number of significant digits, for the table. */
-static void fmt_vec(char *buf, size_t n, prox_vec3 v) { snprintf(buf, n, "(%.6g, %.6g, %.6g)", v.x, v.y, v.z); }
+static void fmt_vec(char *buf, size_t n, prox_vec3 v)
+{
+    v = no_neg_zero(v);
+    snprintf(buf, n, "(%.6g, %.6g, %.6g)", v.x, v.y, v.z);
+}
 
 static void write_table(FILE *f, const check_run *run)
 {
