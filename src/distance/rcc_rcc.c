@@ -893,7 +893,10 @@ static int case1_fast(const cyl *A, const cyl *B, double scale, prox_vec3 origin
     if (L > A->r + B->r) {
         res->distance = L - A->r - B->r;
         res->p1 = prox_v3_add(prox_v3_mad(f1, A->r, v), origin);
-        res->p2 = prox_v3_add(prox_v3_mad(f1, L - B->r, v), origin);
+        /* each point from its own foot: on its surface to rounding even where the feet carry
+         * their ~eps S / |wA x wB| error along the axes (|p2 - p1| then differs from the distance
+         * only to second order in it) */
+        res->p2 = prox_v3_add(prox_v3_mad(prox_v3_mad(B->b, t, B->w), -B->r, v), origin);
         res->pair = PROX_PAIR_SS;
         res->feature1 = res->feature2 = PROX_FEAT_LATERAL;
         res->certificate_gap = res->distance;
