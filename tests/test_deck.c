@@ -1,8 +1,14 @@
 /* Tests of the MCNP deck reader (src/scene/deck.c): block structure, comments, continuations,
  * shorthands, every supported surface card, TRn / *TRn placement (checked against an independent
- * rotation built in the test), and that every bad or unsupported card is reported with its line. */
+ * rotation built in the test), that every bad or unsupported card is reported with its line, and
+ * READ cards (files written to a fresh temp dir under /tmp: surface, cell and data blocks, nesting,
+ * missing files, cycles; prox_deck_parse reports READ as unsupported). */
+#define _POSIX_C_SOURCE 200809L /* mkdtemp, rmdir */
 #include <stdlib.h>
 #include <string.h>
+
+#include <unistd.h>
+#include <sys/stat.h>
 
 #include "test_util.h"
 #include "prox/deck.h"
@@ -329,6 +335,297 @@ static void test_deck_transform_errors(void **state)
     prox_deck_free(&d);
 }
 
+/* ---- READ cards --------------------------------------------------------------------------------- */
+
+/* A temp dir holding the files of one test (removed by tmp_done). */
+typedef struct tmp_files {
+    char dir[64];
+    char names[16][64];
+    int n;
+} tmp_files;
+
+static void tmp_start(tmp_files *t)
+{
+    memset(t, 0, sizeof *t);
+    snprintf(t->dir, sizeof t->dir, "/tmp/prox_deck_XXXXXX");
+    assert_non_null(mkdtemp(t->dir));
+}
+
+/* Writes `text` to dir/name (name may hold one subdirectory, created here) and returns the path. */
+static const char *tmp_write(tmp_files *t, const char *name, const char *text)
+{
+    assert_true(t->n < 16);
+    const char *slash = strchr(name, '/');
+    if (slash) {
+        char sub[256];
+        snprintf(sub, sizeof sub, "%s/%.*s", t->dir, (int)(slash - name), name);
+        mkdir(sub, 0700); /* may exist already */
+    }
+    static char path[256];
+    snprintf(path, sizeof path, "%s/%s", t->dir, name);
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    assert_int_equal(fputs(text, f) >= 0, 1);
+    assert_int_equal(fclose(f), 0);
+    snprintf(t->names[t->n++], sizeof t->names[0], "%s", name);
+    return path;
+}
+
+/* Removes every file written and the (sub)directories. */
+static void tmp_done(tmp_files *t)
+{
+    char path[256];
+    for (int i = t->n - 1; i >= 0; --i) {
+        snprintf(path, sizeof path, "%s/%s", t->dir, t->names[i]);
+        remove(path);
+        char *slash = strchr(t->names[i], '/');
+        if (slash) {
+            snprintf(path, sizeof path, "%s/%.*s", t->dir, (int)(slash - t->names[i]), t->names[i]);
+            rmdir(path); /* fails while the subdirectory still holds files */
+        }
+    }
+    rmdir(t->dir);
+}
+
+/* Reads the main deck (written as dir/main.i) through prox_deck_read_file. */
+static prox_deck read_deck(tmp_files *t, const char *text)
+{
+    const char *path = tmp_write(t, "main.i", text);
+    prox_deck d = {0};
+    assert_int_equal(prox_deck_read_file(path, &d), PROX_OK);
+    return d;
+}
+
+/* 1 when some unsupported note is on `line` and contains `needle`. */
+static int has_unsupported(const prox_deck *d, int line, const char *needle)
+{
+    for (size_t i = 0; i < d->nunsupported; ++i)
+        if (d->unsupported[i].line == line && strstr(d->unsupported[i].text, needle)) return 1;
+    for (size_t i = 0; i < d->nunsupported; ++i)
+        print_message("unsupported line %d: %s\n", d->unsupported[i].line, d->unsupported[i].text);
+    return 0;
+}
+
+static void test_deck_read_surface_block(void **state)
+{
+    (void)state;
+    tmp_files t;
+    tmp_start(&t);
+    tmp_write(&t, "bodies.i",
+              "2 RCC 0 0 0  0 0 5  1\n"
+              "c a comment in the included file\n"
+              "3 rpp 0 1 0 1 0 1 $ end comment\n"
+              "5 RCC 1 2\n");
+    prox_deck d = read_deck(&t, "read in the surface block\n"
+                                "1 0 -1\n"
+                                "\n"
+                                "1 SO 1\n"
+                                "Read NoEcho File=bodies.i $ two bodies and a bad card\n"
+                                "4 SPH 9 0 0 1\n"
+                                "\n"
+                                "nps 1\n");
+    assert_int_equal(d.nbodies, 4);
+    assert_int_equal(body(&d, 1)->line, 4);
+    const prox_deck_body *b = body(&d, 2);
+    assert_int_equal(b->line, 5); /* the line of the READ card in the main deck */
+    assert_int_equal(b->shape.kind, PROX_SHAPE_RCC);
+    assert_vec(b->shape.u.rcc.axis, prox_v3(0, 0, 5), 0);
+    b = body(&d, 3);
+    assert_int_equal(b->line, 5);
+    assert_int_equal(b->shape.kind, PROX_SHAPE_RPP);
+    assert_near(b->shape.u.rpp.xmax, 1, 0);
+    assert_int_equal(body(&d, 4)->line, 6);
+    /* the bad card of the included file: READ line, and the file's own line in the text */
+    assert_int_equal(d.nerrors, 1);
+    assert_true(has_error(&d, 5, "bodies.i' line 4: surface 5 RCC: needs 7 entries, has 2"));
+    assert_int_equal(d.nunsupported, 0);
+    prox_deck_free(&d);
+    tmp_done(&t);
+}
+
+static void test_deck_read_cell_block(void **state)
+{
+    (void)state;
+    tmp_files t;
+    tmp_start(&t);
+    tmp_write(&t, "rest.i",
+              "2 0 1 -2 fill=1\n"
+              "\n"
+              "1 SO 1\n"
+              "1 SO 2\n");
+    prox_deck d = read_deck(&t, "the cell block ends in the included file\n"
+                                "1 0 -1\n"
+                                "READ FILE=rest.i\n"
+                                "3 SO 50\n"
+                                "\n"
+                                "nps 1\n");
+    assert_int_equal(d.nbodies, 2);
+    assert_int_equal(body(&d, 1)->line, 3);
+    assert_int_equal(body(&d, 3)->line, 4); /* after the READ card: in the surface block */
+    assert_near(body(&d, 3)->shape.u.sph.radius, 50, 0);
+    assert_true(has_unsupported(&d, 3, "rest.i' line 1: cell 2 fill"));
+    assert_int_equal(d.nerrors, 1); /* a duplicate within the file names the file's line */
+    assert_true(has_error(&d, 3, "rest.i' line 4: surface 1 is already defined on '"));
+    assert_true(has_error(&d, 3, "rest.i' line 3"));
+    prox_deck_free(&d);
+    tmp_done(&t);
+}
+
+static void test_deck_read_data_block(void **state)
+{
+    (void)state;
+    tmp_files t;
+    tmp_start(&t);
+    tmp_write(&t, "tr.i", "tr1 10 20 30\n");
+    prox_deck d = read_deck(&t, "the TR card comes from an included file\n"
+                                "1 0 -1\n"
+                                "\n"
+                                "1 1 RCC 0 0 0  0 0 1  1\n"
+                                "\n"
+                                "mode p\n"
+                                "read file=tr.i\n"
+                                "nps 1\n");
+    assert_int_equal(d.nerrors, 0);
+    assert_int_equal(d.nbodies, 1);
+    const prox_deck_body *b = body(&d, 1);
+    assert_int_equal(b->tr, 1);
+    assert_vec(b->shape.u.rcc.base, prox_v3(10, 20, 30), 0);
+    prox_deck_free(&d);
+    tmp_done(&t);
+}
+
+static void test_deck_read_nested(void **state)
+{
+    (void)state;
+    tmp_files t;
+    tmp_start(&t);
+    tmp_write(&t, "sub/a.i", "2 SO 2\nread file=b.i\n6 SO 6\n");  /* b.i: next to a.i, in sub/ */
+    tmp_write(&t, "sub/b.i", "3 SO 3\n4 SO\n");
+    prox_deck d = read_deck(&t, "nested READ\n"
+                                "1 0 -1\n"
+                                "\n"
+                                "1 SO 1\n"
+                                "READ FILE=sub/a.i\n"
+                                "5 SO 5\n"
+                                "\n");
+    assert_int_equal(d.nbodies, 5);
+    for (long j = 1; j <= 6; ++j) {
+        if (j == 4) continue;
+        assert_near(body(&d, j)->shape.u.sph.radius, (double)j, 0);
+    }
+    assert_int_equal(body(&d, 3)->line, 5);
+    assert_int_equal(body(&d, 6)->line, 5);
+    assert_int_equal(body(&d, 5)->line, 6);
+    assert_int_equal(d.nerrors, 1);
+    assert_true(has_error(&d, 5, "sub/b.i' line 2: surface 4 SO: needs 1 entries, has 0"));
+    prox_deck_free(&d);
+    tmp_done(&t);
+
+    /* a chain main -> d1 -> ... -> d9: 8 levels are read, the 9th is an error naming the files */
+    tmp_start(&t);
+    char name[16], text[64];
+    for (int k = 1; k <= 9; ++k) {
+        snprintf(name, sizeof name, "d%d.i", k);
+        snprintf(text, sizeof text, "%d SO %d\nread file=d%d.i\n", 10 + k, k, k + 1);
+        tmp_write(&t, name, text);
+    }
+    d = read_deck(&t, "deep\n1 0 -1\n\nread file=d1.i\n\n");
+    assert_int_equal(d.nbodies, 8);
+    for (long j = 11; j <= 18; ++j) assert_int_equal(body(&d, j)->line, 4);
+    assert_int_equal(d.nerrors, 1);
+    assert_true(has_error(&d, 4, "d8.i' line 2: READ FILE=d9.i: nested deeper than 8 levels: main.i -> d1.i"));
+    prox_deck_free(&d);
+    tmp_done(&t);
+}
+
+static void test_deck_read_missing_file(void **state)
+{
+    (void)state;
+    tmp_files t;
+    tmp_start(&t);
+    prox_deck d = read_deck(&t, "missing file\n"
+                                "1 0 -1\n"
+                                "\n"
+                                "1 SO 1\n"
+                                "READ FILE=nope.i\n"
+                                "2 SO 2\n"
+                                "read noecho\n"
+                                "read file=\n"
+                                "read file=x.i bogus\n"
+                                "\n");
+    assert_int_equal(d.nbodies, 2);
+    assert_int_equal(body(&d, 2)->line, 6);
+    assert_int_equal(d.nerrors, 4);
+    assert_true(has_error(&d, 5, "READ FILE=nope.i: cannot read '"));
+    assert_true(has_error(&d, 5, "nope.i'"));
+    assert_true(has_error(&d, 7, "READ card without FILE=name"));
+    assert_true(has_error(&d, 8, "FILE needs '=name'"));
+    assert_true(has_error(&d, 9, "unknown keyword 'bogus'"));
+    prox_deck_free(&d);
+    tmp_done(&t);
+
+    /* DECODE / ENCODE: reported, and the FILE= content is still read */
+    tmp_start(&t);
+    tmp_write(&t, "s.i", "2 SO 2\n");
+    d = read_deck(&t, "decode\n1 0 -1\n\nREAD FILE=s.i DECODE=s.bin\n\n");
+    assert_int_equal(d.nerrors, 0);
+    assert_int_equal(d.nbodies, 1);
+    assert_int_equal(body(&d, 2)->line, 4);
+    assert_true(has_unsupported(&d, 4, "READ DECODE=s.bin"));
+    prox_deck_free(&d);
+    tmp_done(&t);
+}
+
+static void test_deck_read_cycle(void **state)
+{
+    (void)state;
+    tmp_files t;
+    tmp_start(&t);
+    tmp_write(&t, "a.i", "2 SO 2\nread file=b.i\n");
+    tmp_write(&t, "b.i", "3 SO 3\nread file=a.i\n");
+    prox_deck d = read_deck(&t, "cycle\n"
+                                "1 0 -1\n"
+                                "\n"
+                                "1 SO 1\n"
+                                "read file=a.i\n"
+                                "read file=main.i\n" /* the deck itself */
+                                "4 SO 4\n"
+                                "\n");
+    assert_int_equal(d.nbodies, 4); /* every body once */
+    assert_int_equal(body(&d, 3)->line, 5);
+    assert_int_equal(body(&d, 4)->line, 7);
+    assert_int_equal(d.nerrors, 2);
+    assert_true(has_error(&d, 5, "b.i' line 2: READ FILE=a.i: cycle main.i -> a.i -> b.i -> a.i"));
+    assert_true(has_error(&d, 6, "READ FILE=main.i: cycle main.i -> main.i"));
+    prox_deck_free(&d);
+    tmp_done(&t);
+}
+
+static void test_deck_parse_read_unsupported(void **state)
+{
+    (void)state;
+    prox_deck d = parse("READ FILE=title.i is the title\n"
+                        "1 0 -1\n"
+                        "read file=cells.i\n"
+                        "\n"
+                        "1 SO 1\n"
+                        "READ FILE=/etc/passwd NOECHO $ never opened\n"
+                        "  read\n"
+                        "2 SO 2\n"
+                        "\n"
+                        "read file=data.i\n"
+                        "\n");
+    assert_string_equal(d.title, "READ FILE=title.i is the title");
+    assert_int_equal(d.nerrors, 0);
+    assert_int_equal(d.nbodies, 2);
+    assert_int_equal(d.nunsupported, 4);
+    assert_true(has_unsupported(&d, 3, "read file=cells.i: included files are read by prox_deck_read_file"));
+    assert_true(has_unsupported(&d, 6, "READ FILE=/etc/passwd NOECHO: included files are read by"));
+    assert_true(has_unsupported(&d, 7, "read: included files"));
+    assert_true(has_unsupported(&d, 10, "read file=data.i: included files"));
+    prox_deck_free(&d);
+}
+
 int main(void)
 {
     test_init();
@@ -341,6 +638,13 @@ int main(void)
         cmocka_unit_test(test_deck_structure_errors),
         cmocka_unit_test(test_deck_transforms),
         cmocka_unit_test(test_deck_transform_errors),
+        cmocka_unit_test(test_deck_read_surface_block),
+        cmocka_unit_test(test_deck_read_cell_block),
+        cmocka_unit_test(test_deck_read_data_block),
+        cmocka_unit_test(test_deck_read_nested),
+        cmocka_unit_test(test_deck_read_missing_file),
+        cmocka_unit_test(test_deck_read_cycle),
+        cmocka_unit_test(test_deck_parse_read_unsupported),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

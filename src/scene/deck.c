@@ -19,6 +19,9 @@
 #include "prox/deck.h"
 
 #define DECK_MAX_ENTRIES 64 /* more entries than any card read here can take */
+#define DECK_MAX_DEPTH 8    /* READ nesting levels below the main deck */
+#define DECK_MAX_READS 4096 /* files read through READ cards in one deck (bounds READ fan-out) */
+#define DECK_NAME_SHOWN 64  /* longest file name shown in a note (longer: its tail after "...") */
 
 /* ---- growable arrays ------------------------------------------------------------------------ */
 
@@ -60,7 +63,24 @@ typedef struct transform {
     int identity;   /* R is exactly the identity */
 } transform;
 
-/* Everything the parser keeps while reading. */
+/* Where a line of the expanded input comes from: a file (index into parser.files; 0 = the main
+ * deck), its line there, and the line of the main deck that holds it (the top-level READ card). */
+typedef struct line_origin {
+    int file;
+    int line;
+    int top;
+} line_origin;
+
+/* One text being read: the main deck or a file brought in by READ. */
+typedef struct source {
+    char *owned;     /* the file's text (NULL for the caller's text) */
+    const char *pos; /* next unread character */
+    int file;        /* index into parser.files */
+    int line;        /* lines read from it so far */
+} source;
+
+/* Everything the parser keeps while reading. Card and note line numbers inside the parser are
+ * "virtual" lines: the running count of lines read from all sources; origin() maps them back. */
 typedef struct parser {
     prox_deck *deck;
     size_t cap_bodies, cap_errors, cap_unsup;
@@ -69,10 +89,46 @@ typedef struct parser {
     transform *tr;
     size_t ntr, cap_tr;
     int nomem;
+    int with_files;         /* READ cards are followed (prox_deck_read_file) */
+    char **files;           /* resolved paths of the files read; files[0] is the main deck */
+    size_t nfiles, cap_files;
+    line_origin *map;       /* map[v - 1]: origin of virtual line v (only with_files) */
+    size_t nmap, cap_map;
+    source stack[DECK_MAX_DEPTH + 1];
+    int depth;              /* stack[0..depth] are open; stack[depth] is read */
 } parser;
 
-/* Adds a note (error or unsupported card) with printf-style text. */
-static void add_note(parser *p, int unsupported, int line, const char *fmt, ...)
+/* The origin of virtual line v (the identity for the caller's text and for line 0). */
+static line_origin origin(const parser *p, int v)
+{
+    if (v > 0 && (size_t)v <= p->nmap) return p->map[v - 1];
+    return (line_origin){0, v, v};
+}
+
+/* The tail of a path short enough for a note (at most DECK_NAME_SHOWN characters). */
+static const char *shown_name(const char *path, int *cut)
+{
+    size_t n = strlen(path);
+    *cut = n > DECK_NAME_SHOWN;
+    return *cut ? path + n - (DECK_NAME_SHOWN - 3) : path;
+}
+
+/* Writes "line N" (main deck) or "'file' line n" (an included file) for virtual line v. */
+static void where(const parser *p, int v, char *buf, size_t sz)
+{
+    line_origin o = origin(p, v);
+    if (o.file == 0) {
+        snprintf(buf, sz, "line %d", o.line);
+        return;
+    }
+    int cut;
+    const char *name = shown_name(p->files[o.file], &cut);
+    snprintf(buf, sz, "'%s%s' line %d", cut ? "..." : "", name, o.line);
+}
+
+/* Adds a note (error or unsupported card) with printf-style text, at virtual line v: the note's line
+ * is the main-deck line, and a line of an included file is named in front of the text. */
+static void add_note(parser *p, int unsupported, int v, const char *fmt, ...)
 {
     prox_deck *d = p->deck;
     prox_deck_note **arr = unsupported ? &d->unsupported : &d->errors;
@@ -83,11 +139,25 @@ static void add_note(parser *p, int unsupported, int line, const char *fmt, ...)
         return;
     }
     prox_deck_note *note = &(*arr)[(*n)++];
-    note->line = line;
+    line_origin o = origin(p, v);
+    note->line = o.top;
+    char msg[PROX_DECK_TEXT];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(note->text, sizeof note->text, fmt, ap);
+    vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
+    if (o.file == 0) {
+        memcpy(note->text, msg, sizeof msg);
+        return;
+    }
+    char at[DECK_NAME_SHOWN + 32];
+    where(p, v, at, sizeof at);
+    /* "<where>: <msg>", cut to the note's size (copied by hand: the cut is intended) */
+    size_t k = 0, la = strlen(at), lm = strlen(msg);
+    for (size_t i = 0; i < la && k + 1 < sizeof note->text; ++i) note->text[k++] = at[i];
+    for (size_t i = 0; i < 2 && k + 1 < sizeof note->text; ++i) note->text[k++] = ": "[i];
+    for (size_t i = 0; i < lm && k + 1 < sizeof note->text; ++i) note->text[k++] = msg[i];
+    note->text[k] = 0;
 }
 
 /* ---- lexical helpers ------------------------------------------------------------------------ */
@@ -330,7 +400,9 @@ static void surface_card(parser *p, char *text, int line)
     }
     for (size_t i = 0; i < p->nsurf; ++i)
         if (p->surf[i].surface == j) {
-            add_note(p, 0, line, "surface %ld is already defined on line %d", j, p->surf[i].line);
+            char at[DECK_NAME_SHOWN + 32];
+            where(p, p->surf[i].line, at, sizeof at);
+            add_note(p, 0, line, "surface %ld is already defined on %s", j, at);
             return;
         }
     if (grow((void **)&p->surf, &p->cap_surf, p->nsurf, sizeof *p->surf)) {
@@ -396,7 +468,9 @@ static void tr_card(parser *p, char **tok, size_t nt, int line)
     }
     for (size_t i = 0; i < p->ntr; ++i)
         if (p->tr[i].n == n) {
-            add_note(p, 0, line, "TR%ld is already defined on line %d", n, p->tr[i].line);
+            char at[DECK_NAME_SHOWN + 32];
+            where(p, p->tr[i].line, at, sizeof at);
+            add_note(p, 0, line, "TR%ld is already defined on %s", n, at);
             return;
         }
     double v[DECK_MAX_ENTRIES];
@@ -543,7 +617,7 @@ static void resolve_surface(parser *p, const pending_surface *s)
     }
     prox_deck_body *b = &d->bodies[d->nbodies++];
     b->surface = s->surface;
-    b->line = s->line;
+    b->line = origin(p, s->line).top;
     memcpy(b->card, s->card, sizeof b->card);
     b->tr = s->tr;
     b->shape = local;
@@ -666,7 +740,260 @@ static int feed_line(parser *p, card *c, int *amp, char *s, size_t n, int line, 
     return card_append(c, s, n);
 }
 
-/* Splits the text into lines and blocks and reads every card. */
+/* ---- READ cards: files inserted in place of the card ------------------------------------------ */
+
+/* A copy of the n first characters of s (NULL when memory ran out). */
+static char *copy_string(const char *s, size_t n)
+{
+    char *q = malloc(n + 1);
+    if (!q) return NULL;
+    memcpy(q, s, n);
+    q[n] = 0;
+    return q;
+}
+
+/* 1 when c separates directories in a path. */
+static int is_separator(char c)
+{
+#ifdef _WIN32
+    if (c == '\\') return 1;
+#endif
+    return c == '/';
+}
+
+/* The path of `name` (as written on a READ card) resolved against the directory of `parent`: an
+ * absolute name stays, a relative one gets parent's directory in front. NULL when memory ran out. */
+static char *resolve_path(const char *parent, const char *name)
+{
+    int absolute = is_separator(name[0]);
+#ifdef _WIN32
+    absolute |= isalpha((unsigned char)name[0]) && name[1] == ':';
+#endif
+    size_t dir = 0;
+    if (!absolute)
+        for (size_t i = 0; parent[i]; ++i)
+            if (is_separator(parent[i])) dir = i + 1;
+    size_t n = strlen(name);
+    char *q = malloc(dir + n + 1);
+    if (!q) return NULL;
+    memcpy(q, parent, dir);
+    memcpy(q + dir, name, n + 1);
+    return q;
+}
+
+/* The file name after the last directory separator. */
+static const char *base_name(const char *path)
+{
+    const char *b = path;
+    for (const char *s = path; *s; ++s)
+        if (is_separator(*s)) b = s + 1;
+    return b;
+}
+
+/* Reads a whole file into a NUL-terminated buffer. 0 on success, 1 when it cannot be read, 2 when
+ * it holds NUL bytes (not a text deck), -1 when memory ran out. */
+static int load_file(const char *path, char **out)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return 1;
+    char *text = NULL;
+    size_t n = 0, cap = 0;
+    for (;;) {
+        if (cap - n < 65536) {
+            size_t nc = cap ? 2 * cap : 131072;
+            char *q = realloc(text, nc);
+            if (!q) {
+                fclose(f);
+                free(text);
+                return -1;
+            }
+            text = q, cap = nc;
+        }
+        size_t got = fread(text + n, 1, cap - n - 1, f);
+        n += got;
+        if (got == 0) break;
+    }
+    int bad = ferror(f);
+    fclose(f);
+    if (bad) {
+        free(text);
+        return 1;
+    }
+    text[n] = 0;
+    if (memchr(text, 0, n)) {
+        free(text);
+        return 2;
+    }
+    *out = text;
+    return 0;
+}
+
+/* Adds a resolved path (taken over) to the list of files. Its index, or -1 when memory ran out. */
+static int add_file(parser *p, char *path)
+{
+    if (grow((void **)&p->files, &p->cap_files, p->nfiles, sizeof *p->files)) {
+        free(path);
+        p->nomem = 1;
+        return -1;
+    }
+    p->files[p->nfiles] = path;
+    return (int)p->nfiles++;
+}
+
+/* 1 when the line (tabs expanded) is a READ card: the keyword READ starts in columns 1-5 and is
+ * followed by a blank, '=' or the end of the line (a line with 5 leading blanks continues a card). */
+static int is_read_card(const char *s, size_t n)
+{
+    size_t i = 0;
+    while (i < n && i < 5 && s[i] == ' ') ++i;
+    if (i >= 5 || n - i < 4) return 0;
+    for (size_t k = 0; k < 4; ++k)
+        if (tolower((unsigned char)s[i + k]) != "read"[k]) return 0;
+    return i + 4 == n || isspace((unsigned char)s[i + 4]) || s[i + 4] == '=' || s[i + 4] == '$';
+}
+
+/* Writes the names of the open files and `next` as "a.i -> b.i -> next" (base names). */
+static void chain_names(const parser *p, const char *next, char *buf, size_t sz)
+{
+    size_t k = 0;
+    buf[0] = 0;
+    for (int i = 0; i <= p->depth && k < sz; ++i) {
+        int w = snprintf(buf + k, sz - k, "%s -> ", base_name(p->files[p->stack[i].file]));
+        if (w < 0) return;
+        k += (size_t)w;
+    }
+    if (k < sz) snprintf(buf + k, sz - k, "%s", base_name(next));
+}
+
+/* Reads a READ card (line s of n characters, virtual line v) and, when READ cards are followed,
+ * opens its file as the next source. Keywords: FILE=name, NOECHO, DECODE=..., ENCODE=... */
+static void read_card(parser *p, char *s, size_t n, int v)
+{
+    char *dollar = memchr(s, '$', n);
+    if (dollar) n = (size_t)(dollar - s);
+    while (n && isspace((unsigned char)s[n - 1])) --n;
+    s[n] = 0;
+    while (*s == ' ') ++s;
+    if (!p->with_files) {
+        add_note(p, 1, v, "%.100s: included files are read by prox_deck_read_file", s);
+        return;
+    }
+    char *q = s + 4, *file = NULL;
+    for (;;) {
+        while (isspace((unsigned char)*q)) ++q;
+        if (!*q) break;
+        char *key = q;
+        while (isalnum((unsigned char)*q)) ++q;
+        size_t kl = (size_t)(q - key);
+        if (kl == 0) {
+            add_note(p, 0, v, "READ: unexpected '%c'", *q);
+            return;
+        }
+        while (isspace((unsigned char)*q)) ++q;
+        char *val = NULL;
+        if (*q == '=') {
+            ++q;
+            while (isspace((unsigned char)*q)) ++q;
+            val = q;
+            while (*q && !isspace((unsigned char)*q)) ++q;
+            if (*q) *q++ = 0;
+            if (!*val) val = NULL;
+        }
+        char kw[8] = {0};
+        for (size_t i = 0; i < kl && i < sizeof kw - 1; ++i) kw[i] = (char)toupper((unsigned char)key[i]);
+        if (kl < sizeof kw && !strcmp(kw, "FILE")) {
+            if (!val) {
+                add_note(p, 0, v, "READ: FILE needs '=name'");
+                return;
+            }
+            file = val;
+        } else if (kl < sizeof kw && !strcmp(kw, "NOECHO")) {
+            /* echo control of the output file: nothing to do here */
+        } else if (kl < sizeof kw && (!strcmp(kw, "DECODE") || !strcmp(kw, "ENCODE"))) {
+            add_note(p, 1, v, "READ %s=%.60s: binary files are not read (FILE= is read as text)", kw,
+                     val ? val : "");
+        } else {
+            add_note(p, 0, v, "READ: unknown keyword '%.*s'", (int)(kl < 40 ? kl : 40), key);
+            return;
+        }
+    }
+    if (!file) {
+        add_note(p, 0, v, "READ card without FILE=name");
+        return;
+    }
+    char *path = resolve_path(p->files[p->stack[p->depth].file], file);
+    if (!path) {
+        p->nomem = 1;
+        return;
+    }
+    char chain[PROX_DECK_TEXT];
+    for (int i = 0; i <= p->depth; ++i)
+        if (!strcmp(p->files[p->stack[i].file], path)) {
+            chain_names(p, path, chain, sizeof chain);
+            add_note(p, 0, v, "READ FILE=%.40s: cycle %s", file, chain);
+            free(path);
+            return;
+        }
+    if (p->depth == DECK_MAX_DEPTH) {
+        chain_names(p, path, chain, sizeof chain);
+        add_note(p, 0, v, "READ FILE=%.40s: nested deeper than %d levels: %s", file, DECK_MAX_DEPTH, chain);
+        free(path);
+        return;
+    }
+    if (p->nfiles > DECK_MAX_READS) {
+        add_note(p, 0, v, "READ FILE=%.40s: more than %d files read through READ", file, DECK_MAX_READS);
+        free(path);
+        return;
+    }
+    char *text = NULL;
+    int r = load_file(path, &text);
+    if (r) {
+        if (r < 0) p->nomem = 1;
+        else {
+            int cut;
+            const char *name = shown_name(path, &cut);
+            add_note(p, 0, v, "READ FILE=%.40s: %s '%s%s'", file,
+                     r == 1 ? "cannot read" : "holds NUL bytes, not a text file:", cut ? "..." : "", name);
+        }
+        free(path);
+        return;
+    }
+    int idx = add_file(p, path);
+    if (idx < 0) {
+        free(text);
+        return;
+    }
+    p->stack[++p->depth] = (source){.owned = text, .pos = text, .file = idx};
+}
+
+/* The next physical line of the input: from the innermost open file, going back to the file that
+ * read it when one ends. Sets *s and *n and records the line's origin; 0 at the end of the deck. */
+static int next_line(parser *p, const char **s, size_t *n)
+{
+    source *src = &p->stack[p->depth];
+    while (!*src->pos) {
+        if (p->depth == 0) return 0;
+        free(src->owned);
+        src->owned = NULL;
+        src = &p->stack[--p->depth];
+    }
+    const char *e = strchr(src->pos, '\n');
+    *s = src->pos;
+    *n = e ? (size_t)(e - src->pos) : strlen(src->pos);
+    src->pos = e ? e + 1 : src->pos + *n;
+    src->line++;
+    if (p->with_files) {
+        if (grow((void **)&p->map, &p->cap_map, p->nmap, sizeof *p->map)) {
+            p->nomem = 1;
+            return 0;
+        }
+        p->map[p->nmap++] = (line_origin){src->file, src->line, p->stack[0].line};
+    }
+    return 1;
+}
+
+/* Splits the input into lines and blocks and reads every card. `line` counts virtual lines (every
+ * line read from any source); notes and bodies map them back to the main deck through origin(). */
 static void read_blocks(parser *p, const char *text)
 {
     int block = B_MESSAGE, line = 0, amp = 0, in_message = 0;
@@ -677,9 +1004,11 @@ static void read_blocks(parser *p, const char *text)
         p->nomem = 1;
         return;
     }
-    for (const char *s = text; *s && block != B_DONE && !p->nomem;) {
-        const char *e = strchr(s, '\n');
-        size_t n = e ? (size_t)(e - s) : strlen(s);
+    p->stack[0] = (source){.pos = text};
+    p->depth = 0;
+    const char *s;
+    size_t n;
+    while (block != B_DONE && !p->nomem && next_line(p, &s, &n)) {
         ++line;
         if (8 * n + 16 > cap) {
             cap = 8 * n + 16;
@@ -691,7 +1020,6 @@ static void read_blocks(parser *p, const char *text)
             buf = q;
         }
         size_t m = expand_line(s, n, buf, cap);
-        s = e ? e + 1 : s + n;
         size_t first = 0;
         while (first < m && isspace((unsigned char)buf[first])) ++first;
         int blank = first == m;
@@ -722,67 +1050,61 @@ static void read_blocks(parser *p, const char *text)
             continue;
         }
         if (is_comment(buf, m)) continue;
+        if (!amp && is_read_card(buf, m)) { /* ends the card before it; its file comes next */
+            flush_card(p, &c, block);
+            read_card(p, buf, m, line);
+            continue;
+        }
         if (feed_line(p, &c, &amp, buf, m, line, block)) p->nomem = 1;
     }
     if (block != B_DONE) flush_card(p, &c, block);
     if (block < B_SURFACES && !p->nomem)
         add_note(p, 0, 0, "the deck ends before its surface block (a blank line must follow the cell cards)");
+    for (; p->depth > 0; --p->depth) free(p->stack[p->depth].owned);
     free(c.text);
     free(buf);
 }
 
 /* ---- public API -------------------------------------------------------------------------------- */
 
+/* Reads the deck text with the parser set up by the caller, places the bodies, frees the parser. */
+static prox_status run(parser *p, const char *text)
+{
+    read_blocks(p, text);
+    for (size_t i = 0; i < p->nsurf && !p->nomem; ++i) resolve_surface(p, &p->surf[i]);
+    free(p->surf);
+    free(p->tr);
+    free(p->map);
+    for (size_t i = 0; i < p->nfiles; ++i) free(p->files[i]);
+    free(p->files);
+    return p->nomem ? PROX_ENOMEM : PROX_OK;
+}
+
 PROX_API prox_status prox_deck_parse(const char *text, prox_deck *deck)
 {
     if (!text || !deck) return PROX_EINVAL_ARG;
     parser p = {.deck = deck};
-    read_blocks(&p, text);
-    for (size_t i = 0; i < p.nsurf && !p.nomem; ++i) resolve_surface(&p, &p.surf[i]);
-    free(p.surf);
-    free(p.tr);
-    return p.nomem ? PROX_ENOMEM : PROX_OK;
+    return run(&p, text);
 }
 
 PROX_API prox_status prox_deck_read_file(const char *path, prox_deck *deck)
 {
     if (!path || !deck) return PROX_EINVAL_ARG;
-    FILE *f = fopen(path, "rb");
+    parser p = {.deck = deck, .with_files = 1};
     char *text = NULL;
-    size_t n = 0, cap = 0;
-    if (f) {
-        for (;;) {
-            if (cap - n < 65536) {
-                size_t nc = cap ? 2 * cap : 131072;
-                char *q = realloc(text, nc);
-                if (!q) {
-                    fclose(f);
-                    free(text);
-                    return PROX_ENOMEM;
-                }
-                text = q, cap = nc;
-            }
-            size_t got = fread(text + n, 1, cap - n - 1, f);
-            n += got;
-            if (got == 0) break;
-        }
-        int bad = ferror(f);
-        fclose(f);
-        if (bad) free(text), text = NULL;
-    }
-    if (!text) {
-        parser p = {.deck = deck};
-        add_note(&p, 0, 0, "cannot read '%s'", path);
+    int r = load_file(path, &text);
+    if (r) {
+        if (r < 0) return PROX_ENOMEM;
+        add_note(&p, 0, 0, r == 1 ? "cannot read '%s'" : "'%s' holds NUL bytes: not a text deck", path);
         return p.nomem ? PROX_ENOMEM : PROX_OK;
     }
-    text[n] = 0;
-    if (memchr(text, 0, n)) {
-        parser p = {.deck = deck};
-        add_note(&p, 0, 0, "'%s' holds NUL bytes: not a text deck", path);
+    char *name = copy_string(path, strlen(path));
+    if (!name || add_file(&p, name) < 0) {
         free(text);
-        return PROX_OK;
+        free(p.files);
+        return PROX_ENOMEM;
     }
-    prox_status st = prox_deck_parse(text, deck);
+    prox_status st = run(&p, text);
     free(text);
     return st;
 }
