@@ -250,6 +250,164 @@ static void test_tie_regression(void **st)
     assert_true(off_box(&a, r.p1) <= 1e-12 * 3 && off_box(&b, r.p2) <= 1e-12 * 3);
 }
 
+
+/* ---- Randomised exactness of the pruned distance against the exhaustive feature minimum ---- */
+
+/* Long-double point. */
+typedef struct lv3 {
+    ld x[3];
+} lv3;
+
+static lv3 lv(prox_vec3 v) { return (lv3){{v.x, v.y, v.z}}; }
+static ld ldot(lv3 a, lv3 b) { return a.x[0] * b.x[0] + a.x[1] * b.x[1] + a.x[2] * b.x[2]; }
+static lv3 lsub(lv3 a, lv3 b) { return (lv3){{a.x[0] - b.x[0], a.x[1] - b.x[1], a.x[2] - b.x[2]}}; }
+static lv3 lmad(lv3 a, ld s, lv3 b) { return (lv3){{a.x[0] + s * b.x[0], a.x[1] + s * b.x[1], a.x[2] + s * b.x[2]}}; }
+static ld lnorm(lv3 a) { return sqrtl(ldot(a, a)); }
+
+/* Vertex i of the box (bit k of i: + edge k), from the corner. */
+static lv3 box_vertex_ld(const prox_box *b, int i)
+{
+    lv3 v = lv(b->corner);
+    for (int k = 0; k < 3; ++k)
+        if (i >> k & 1) v = lmad(v, 1, lv(b->edge[k]));
+    return v;
+}
+
+/* Distance of x to the solid box: clamp of the edge coordinates (edges are orthogonal). */
+static ld point_box_ld(const prox_box *b, lv3 x)
+{
+    lv3 d = lsub(x, lv(b->corner));
+    ld s2 = 0;
+    for (int k = 0; k < 3; ++k) {
+        lv3 e = lv(b->edge[k]);
+        ld len = lnorm(e), t = ldot(d, e) / len;
+        ld c = t < 0 ? t : (t > len ? t - len : 0);
+        s2 += c * c;
+    }
+    return sqrtl(s2);
+}
+
+/* Distance of x to the segment [p, q]. */
+static ld point_seg_ld(lv3 x, lv3 p, lv3 q)
+{
+    lv3 d = lsub(q, p);
+    ld dd = ldot(d, d), t = dd > 0 ? ldot(lsub(x, p), d) / dd : 0;
+    t = t < 0 ? 0 : (t > 1 ? 1 : t);
+    return lnorm(lsub(x, lmad(p, t, d)));
+}
+
+/* Segment-segment distance: the convex quadratic |p1 + s d1 - p2 - t d2|^2 on [0,1]^2 attains its
+ * minimum at the interior stationary point (when it is inside) or on one of the four sides, each a
+ * point-segment distance. */
+static ld seg_seg_ld(lv3 p1, lv3 q1, lv3 p2, lv3 q2)
+{
+    ld best = fminl(fminl(point_seg_ld(p1, p2, q2), point_seg_ld(q1, p2, q2)),
+                    fminl(point_seg_ld(p2, p1, q1), point_seg_ld(q2, p1, q1)));
+    lv3 d1 = lsub(q1, p1), d2 = lsub(q2, p2), r = lsub(p1, p2);
+    ld a = ldot(d1, d1), b = ldot(d1, d2), e = ldot(d2, d2), c = ldot(d1, r), f = ldot(d2, r);
+    ld det = a * e - b * b;
+    if (det > 1e-24L * a * e) {
+        ld s = (b * f - c * e) / det, t = (a * f - b * c) / det;
+        if (s >= 0 && s <= 1 && t >= 0 && t <= 1) best = fminl(best, lnorm(lsub(lmad(p1, s, d1), lmad(p2, t, d2))));
+    }
+    return best;
+}
+
+/* Exhaustive minimum over the 16 vertex-box and 144 edge-edge distances (exact for disjoint boxes). */
+static ld brute_box_box(const prox_box *a, const prox_box *b)
+{
+    ld best = INFINITY;
+    for (int i = 0; i < 8; ++i) {
+        best = fminl(best, point_box_ld(b, box_vertex_ld(a, i)));
+        best = fminl(best, point_box_ld(a, box_vertex_ld(b, i)));
+    }
+    for (int i = 0; i < 8; ++i)
+        for (int k = 0; k < 3; ++k) {
+            if (i >> k & 1) continue; /* edge from vertex i to i + 2^k */
+            lv3 pa = box_vertex_ld(a, i), qa = box_vertex_ld(a, i | 1 << k);
+            for (int j = 0; j < 8; ++j)
+                for (int m = 0; m < 3; ++m) {
+                    if (j >> m & 1) continue;
+                    best = fminl(best, seg_seg_ld(pa, qa, box_vertex_ld(b, j), box_vertex_ld(b, j | 1 << m)));
+                }
+        }
+    return best;
+}
+
+/* A random box: random or given orientation, half sizes log-uniform in [1e-3, 5] (some thin). */
+static prox_box random_box(test_rng *g, const test_rot *R, prox_vec3 centre)
+{
+    prox_box b;
+    prox_vec3 c = centre;
+    for (int k = 0; k < 3; ++k) {
+        double len = 2.0 * pow(10.0, test_range(g, -3.0, 0.7));
+        b.edge[k] = prox_v3_scale(test_rot_apply(R, prox_v3(k == 0, k == 1, k == 2)), len);
+        c = prox_v3_mad(c, -0.5, b.edge[k]);
+    }
+    b.corner = c;
+    return b;
+}
+
+static double box_scale(const prox_box *a, const prox_box *b)
+{
+    double s = prox_v3_dist(a->corner, b->corner);
+    for (int k = 0; k < 3; ++k) s = fmax(s, fmax(prox_v3_norm(a->edge[k]), prox_v3_norm(b->edge[k])));
+    return s;
+}
+
+/* Orientation of B: random; A's (face-parallel); A's turned 90 deg about one of its axes; A's turned by a
+ * tiny angle (near-parallel edges); A's turned 45 deg about an axis (edges crossing over a face). */
+static test_rot b_rotation(test_rng *g, const test_rot *RA, int kind)
+{
+    if (kind == 0) return test_random_rot(g);
+    double ang = kind == 1 ? 0.0 : (kind == 2 ? 0.5 * PROX_PI : (kind == 3 ? 1e-9 : 0.25 * PROX_PI));
+    int ax = (int)(test_uniform(g) * 3.0);
+    double c = cos(ang), sn = sin(ang);
+    test_rot T = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, R;
+    int p = (ax + 1) % 3, q = (ax + 2) % 3;
+    T.m[p][p] = c, T.m[p][q] = -sn, T.m[q][p] = sn, T.m[q][q] = c;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) R.m[i][j] = RA->m[i][0] * T.m[0][j] + RA->m[i][1] * T.m[1][j] + RA->m[i][2] * T.m[2][j];
+    return R;
+}
+
+/* Seeded random disjoint pairs (random, face-parallel, perpendicular, near-parallel, 45 deg), at random
+ * distances and moved to near-touching gaps (1e-9 .. 1e-1 x size) along their closest direction: the
+ * pruned prox_box_box_distance equals the exhaustive long-double minimum to 1e-12 x scale, its points are
+ * that far apart and lie in their boxes. */
+static void test_random_pruned_exact(void **st)
+{
+    (void)st;
+    test_rng g = test_rng_seed(2024);
+    int checked = 0;
+    for (int it = 0; it < 4000; ++it) {
+        test_rot RA = test_random_rot(&g), RB = b_rotation(&g, &RA, it % 5);
+        prox_vec3 ca = prox_v3(test_range(&g, -3, 3), test_range(&g, -3, 3), test_range(&g, -3, 3));
+        prox_box a = random_box(&g, &RA, ca);
+        prox_box b = random_box(&g, &RB, prox_v3_mad(ca, test_range(&g, 0.0, 15.0), test_unit(&g)));
+        prox_distance_result d = prox_box_box_distance(&a, &b);
+        assert_int_equal(d.status, PROX_OK);
+        if (d.intersect) continue;
+        if ((it / 5) % 2) { /* move B along the closest direction to a small gap */
+            double gap = pow(10.0, test_range(&g, -9.0, -1.0)) * box_scale(&a, &b);
+            prox_vec3 n = prox_v3_scale(prox_v3_sub(d.p2, d.p1), 1.0 / d.distance);
+            b.corner = prox_v3_mad(b.corner, gap - d.distance, n);
+            d = prox_box_box_distance(&a, &b);
+            assert_int_equal(d.status, PROX_OK);
+            if (d.intersect) continue;
+        }
+        double scale = box_scale(&a, &b), tol = 1e-12 * scale;
+        ld ref = brute_box_box(&a, &b);
+        assert_near(d.distance, (double)ref, tol);
+        assert_near(prox_v3_dist(d.p1, d.p2), d.distance, tol);
+        assert_true(off_box(&a, d.p1) <= tol);
+        assert_true(off_box(&b, d.p2) <= tol);
+        assert_true(d.certificate_gap <= d.distance + tol);
+        ++checked;
+    }
+    assert_true(checked > 3000);
+}
+
 int main(void)
 {
     test_init();
@@ -257,6 +415,7 @@ int main(void)
                                        cmocka_unit_test(test_vertex_to_face), cmocka_unit_test(test_inside_and_cross),
                                        cmocka_unit_test(test_near_parallel_edges),
                                        cmocka_unit_test(test_edge_across_face_tie),
-                                       cmocka_unit_test(test_tie_regression)};
+                                       cmocka_unit_test(test_tie_regression),
+                                       cmocka_unit_test(test_random_pruned_exact)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
