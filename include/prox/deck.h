@@ -6,7 +6,8 @@
 /// Rules followed (MCNP6 manual, Ch. 2-3): case-insensitive; `c` comment cards (c in columns 1-5
 /// followed by a blank, or alone); `$` end-of-line comments; continuation by five leading blanks or
 /// a trailing `&`; an optional `message:` block; blank-line block delimiters; numbers with E/D
-/// exponents; the shorthands nR, nI, xM, nILOG (nJ and Fortran exponents without E are errors).
+/// exponents; the shorthands nR, nI, xM, nILOG (nJ and Fortran exponents without E are errors);
+/// READ FILE=name cards (followed by prox_deck_read_file only; see there).
 #ifndef PROX_DECK_H
 #define PROX_DECK_H
 
@@ -45,9 +46,15 @@ typedef struct prox_deck {
 
 /// Parses the deck held in `text` (NUL-terminated). Returns PROX_OK when the text was read (the deck
 /// may still hold errors: see deck->nerrors), PROX_EINVAL_ARG for null arguments, PROX_ENOMEM when
-/// memory ran out. Any previous content of *deck is not freed: pass a zeroed deck.
+/// memory ran out. Any previous content of *deck is not freed: pass a zeroed deck. With no file
+/// context, a READ card is listed as unsupported (no file is opened).
 PROX_API prox_status prox_deck_parse(const char *text, prox_deck *deck);
 /// Reads and parses the file at `path`; a file that cannot be read gives one error with line 0.
+/// READ FILE=name cards are followed: the file (relative names resolved against the directory of
+/// the file holding the card; nesting up to 8 levels) replaces the card. Bodies and notes that come
+/// from an included file have `line` = the line of the READ card in the main deck, and a note's text
+/// starts with "'<file>' line <n>: " (the file's own line). Missing files, cycles, deeper nesting
+/// and READ cards without FILE= are errors on the READ card's line; the rest is still read.
 PROX_API prox_status prox_deck_read_file(const char *path, prox_deck *deck);
 /// Frees everything a deck holds and zeroes it.
 PROX_API void prox_deck_free(prox_deck *deck);

@@ -8,7 +8,24 @@
  * columns of B are the auxiliary axes x', y', z' in main coordinates: (B1 B2 B3) = (xx' yx' zx') etc.
  * With *TRn the B entries are angles in degrees. Patterns read: 0 entries of B (identity), 6 (x' and
  * y' axes; z' = x' cross y'), 9 (all). MCNP's other short patterns are reported as errors. B must be
- * orthonormal within 1e-3 (MCNP's own tolerance); it is then re-orthonormalised (Gram-Schmidt). */
+ * orthonormal within 1e-3 (MCNP's own tolerance); it is then re-orthonormalised (Gram-Schmidt).
+ *
+ * READ card (Ch. 3, "READ card": READ FILE=name [NOECHO] [DECODE=..] [ENCODE=..], anywhere after the
+ * title; the file's lines replace the card, its blank lines delimit blocks as usual). Design: the
+ * lines are read from a stack of sources (the main deck, then each open file, at most 8 levels
+ * deep); every line gets a running "virtual" number, and with prox_deck_read_file a per-line map
+ * records its origin (file, line in that file, line of the main deck, i.e. the top-level READ
+ * card). Cards carry virtual numbers; add_note and the bodies translate them through the map, so
+ * note and body lines are always exact main-deck lines and a note from an included file starts
+ * with "'<file>' line <n>: ". A READ card ends the card before it (a new card starts in columns
+ * 1-5); it cannot itself be continued. A relative name is resolved against the directory of the
+ * file holding the card. A cycle (the resolved path already open, compared as strings; other
+ * spellings of the same file end at the depth limit), nesting deeper than 8, a missing file, a file
+ * with NUL bytes, a card without FILE= and an unknown keyword are errors on the card's line; the
+ * rest of the deck is still read. DECODE / ENCODE (binary files) are noted as unsupported and the
+ * FILE= content is read as text; NOECHO is accepted. At most 4096 files are read per deck (a bound on
+ * READ fan-out). prox_deck_parse has no file context: every READ card there is an unsupported note,
+ * and it never touches the filesystem. */
 #include <ctype.h>
 #include <errno.h>
 #include <stdarg.h>
