@@ -123,16 +123,67 @@ static int box_rcc_meet(const prox_bframe *B, const prox_cframe *c, double tol, 
     return 0;
 }
 
+/* Projections on a unit direction n relative to the box centre m (small numbers: the rounding stays
+ * ~1e-16 x pair scale wherever the pair sits): the 8 box vertices (prox_bframe_vertex numbering), their
+ * maximum, and the least projection of the solid cylinder (of each end disk in disk[2]). For any x in a
+ * set X of the box and y in a set Y of the cylinder, |y - x| >= n.(y - x) >= min_Y n.y - max_X n.x: the
+ * lower bounds that prune the distance candidates below. */
+typedef struct br_dir {
+    prox_vec3 n;
+    double v[8], vmax, cmin, disk[2];
+} br_dir;
+
+static br_dir br_dir_make(const prox_bframe *B, const prox_cframe *c, prox_vec3 n)
+{
+    br_dir D;
+    D.n = n;
+    double e[3];
+    for (int k = 0; k < 3; ++k) e[k] = B->h[k] * prox_v3_dot(n, B->a[k]);
+    D.vmax = fabs(e[0]) + fabs(e[1]) + fabs(e[2]);
+    for (int i = 0; i < 8; ++i) D.v[i] = ((i & 1) ? e[0] : -e[0]) + ((i & 2) ? e[1] : -e[1]) + ((i & 4) ? e[2] : -e[2]);
+    double nw = prox_v3_dot(n, c->w), perp = c->r * prox_v3_norm(prox_v3_mad(n, -nw, c->w));
+    double b0 = prox_v3_dot(n, prox_v3_sub(c->base, B->m));
+    D.disk[0] = b0 - perp;
+    D.disk[1] = b0 + c->h * nw - perp;
+    D.cmin = fmin(D.disk[0], D.disk[1]);
+    return D;
+}
+
+/* Gap of the pair along D.n: a lower bound of the distance (negative when n does not separate). */
+static double br_gap(const br_dir *D) { return D->cmin - D->vmax; }
+
+/* A cheap separating direction: the best of the centre line, the cylinder axis and the box axes (each
+ * oriented from the box towards the cylinder); *gap its gap (a lower bound of the distance). */
+static prox_vec3 br_separating_dir(const prox_bframe *B, const prox_cframe *c, double *gap)
+{
+    prox_vec3 cc = prox_v3_sub(prox_v3_mad(c->base, 0.5 * c->h, c->w), B->m);
+    double ncc = prox_v3_norm(cc);
+    prox_vec3 cand[5] = {ncc > 0.0 ? prox_v3_divs(cc, ncc) : c->w, c->w, B->a[0], B->a[1], B->a[2]};
+    prox_vec3 best = cand[0];
+    *gap = -INFINITY;
+    for (int i = 0; i < 5; ++i) {
+        prox_vec3 n = prox_v3_dot(cand[i], cc) >= 0.0 ? cand[i] : prox_v3_neg(cand[i]);
+        br_dir D = br_dir_make(B, c, n);
+        double g = br_gap(&D);
+        if (g > *gap) *gap = g, best = n;
+    }
+    return best;
+}
+
 /* Validates the pair, builds the frames and decides the verdict shared by the test and the distance
- * (*x a common point when they meet). */
+ * (*x a common point when they meet; *n0 the best cheap separating direction). A gap above 8 tol along
+ * a cheap direction decides "disjoint" without the exact test: box_rcc_meet enlarges the solids by at
+ * most 2 tol per coordinate (2 sqrt(3) tol in all), so it cannot find a common point there either. */
 static prox_status box_rcc_setup(const prox_box *a, const prox_rcc *b, prox_bframe *B, prox_cframe *c, int *meet,
-                                 prox_vec3 *x)
+                                 prox_vec3 *x, prox_vec3 *n0)
 {
     prox_status st = prox_valid2(prox_box_validate(a), prox_rcc_validate(b));
     if (st != PROX_OK) return st;
     *B = prox_bframe_make(a);
     *c = prox_cframe_make(b);
-    *meet = box_rcc_meet(B, c, PROX_QUERY_REL_TOL * pair_scale(B, c), x);
+    double tol = PROX_QUERY_REL_TOL * pair_scale(B, c), gap;
+    *n0 = br_separating_dir(B, c, &gap);
+    *meet = gap > 8.0 * tol ? 0 : box_rcc_meet(B, c, tol, x);
     return PROX_OK;
 }
 
@@ -141,8 +192,8 @@ PROX_API prox_test_result prox_box_rcc_test(const prox_box *a, const prox_rcc *b
     prox_test_result r = {0};
     prox_bframe B;
     prox_cframe c;
-    prox_vec3 x;
-    r.status = box_rcc_setup(a, b, &B, &c, &r.intersect, &x);
+    prox_vec3 x, n0;
+    r.status = box_rcc_setup(a, b, &B, &c, &r.intersect, &x, &n0);
     return r;
 }
 
@@ -175,13 +226,15 @@ static double point_seg_dist(prox_vec3 x, const prox_segment *s)
 
 /* Edge against the solid end disk `top` (its rim included) by prox_disk_segment (closed form: plane
  * crossing, endpoints against the disk, the rim by the quartic of prox_circle_segment), skipped when a
- * cheap lower bound (height of the edge above the disk's plane; distance from the disk's centre minus r)
- * already reaches `best`. */
-static double edge_cap(const prox_cframe *c, int top, const prox_segment *s, double best, prox_vec3 *x, prox_vec3 *y)
+ * cheap lower bound (lb0 from the projections; height of the edge above the disk's plane; distance from
+ * the disk's centre minus r) already reaches `best`. */
+static double edge_cap(const prox_cframe *c, int top, const prox_segment *s, double lb0, double best, prox_vec3 *x,
+                       prox_vec3 *y)
 {
     prox_vec3 ctr = prox_cframe_rim_center(c, top);
     double ha = prox_v3_dot(prox_v3_sub(s->a, ctr), c->w), hb = prox_v3_dot(prox_v3_sub(s->b, ctr), c->w);
     double lb = (ha > 0.0) == (hb > 0.0) && ha != 0.0 && hb != 0.0 ? fmin(fabs(ha), fabs(hb)) : 0.0;
+    if (fmax(lb, lb0) >= best) return INFINITY;
     lb = fmax(lb, point_seg_dist(ctr, s) - c->r);
     if (lb >= best) return INFINITY;
     prox_disk D = {ctr, c->w, c->r};
@@ -192,23 +245,54 @@ static double edge_cap(const prox_cframe *c, int top, const prox_segment *s, dou
     return q.distance;
 }
 
-/* The 12 edges against the solid cylinder, nearest first by the capsule lower bound
- * dist(edge, axis segment) - r (the cylinder lies in that capsule), stopping when the bound reaches the
- * best distance found; each edge against the lateral surface and both end disks. */
-static void edges_cyl(const prox_bframe *B, const prox_cframe *c, double *best, prox_vec3 *p1, prox_vec3 *p2)
+/* Vertex indices (prox_bframe_vertex numbering) of the ends of edge j (prox_bframe_edge numbering). */
+static void edge_ends(int j, int *p, int *q)
+{
+    int k = j / 4, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+    *p = ((j & 1) << k1) | (((j >> 1) & 1) << k2);
+    *q = *p | (1 << k);
+}
+
+/* Lower bound of the distance from the box vertices in `mask` (max of their projections) to the part of
+ * the cylinder with least projection `ymin[d]` along the two directions D[d]. */
+static double proj_lb(const br_dir D[2], unsigned mask, const double ymin[2])
+{
+    double lb = -INFINITY;
+    for (int d = 0; d < 2; ++d) {
+        double hi = -INFINITY;
+        for (int i = 0; i < 8; ++i)
+            if (mask >> i & 1) hi = fmax(hi, D[d].v[i]);
+        lb = fmax(lb, ymin[d] - hi);
+    }
+    return lb;
+}
+
+/* The 12 edges against the solid cylinder, nearest first by a lower bound: the projection bound along
+ * the directions D (cheap; edges it already rules out get no more work), then the capsule bound
+ * dist(edge, axis segment) - r (the cylinder lies in that capsule); stopping when the bound reaches the
+ * best distance found; each remaining edge against the lateral surface and both end disks. */
+static void edges_cyl(const prox_bframe *B, const prox_cframe *c, const br_dir D[2], double *best, prox_vec3 *p1,
+                      prox_vec3 *p2)
 {
     prox_segment e[12];
     double lb[12];
-    int order[12];
+    unsigned ends[12];
+    int order[12], m = 0;
     prox_vec3 top = prox_v3_mad(c->base, c->h, c->w), u, v;
+    double cmin[2] = {D[0].cmin, D[1].cmin};
     for (int j = 0; j < 12; ++j) {
+        int p, q;
+        edge_ends(j, &p, &q);
+        ends[j] = 1u << p | 1u << q;
+        lb[j] = proj_lb(D, ends[j], cmin);
+        if (lb[j] >= *best) continue;
         prox_bframe_edge(B, j, &e[j].a, &e[j].b);
-        lb[j] = prox_seg_seg(e[j].a, e[j].b, c->base, top, &u, &v) - c->r;
-        int i = j;
+        lb[j] = fmax(lb[j], prox_seg_seg(e[j].a, e[j].b, c->base, top, &u, &v) - c->r);
+        int i = m++;
         for (; i > 0 && lb[order[i - 1]] > lb[j]; --i) order[i] = order[i - 1];
         order[i] = j;
     }
-    for (int i = 0; i < 12; ++i) {
+    for (int i = 0; i < m; ++i) {
         const prox_segment *s = &e[order[i]];
         if (lb[order[i]] >= *best) break;
         prox_vec3 x, y;
@@ -218,7 +302,8 @@ static void edges_cyl(const prox_bframe *B, const prox_cframe *c, double *best, 
             continue;
         }
         for (int t = 0; t < 2; ++t) {
-            d = edge_cap(c, t, s, *best, &x, &y);
+            double dmin[2] = {D[0].disk[t], D[1].disk[t]};
+            d = edge_cap(c, t, s, proj_lb(D, ends[order[i]], dmin), *best, &x, &y);
             if (d < *best) *best = d, *p1 = x, *p2 = y;
         }
     }
@@ -251,32 +336,64 @@ static double rim_face(const prox_cframe *c, int top, const prox_bframe *B, int 
     return height;
 }
 
+/* Vertex i of the box against the solid cylinder, once (bit i of *done). */
+static void vertex_cyl(const prox_bframe *B, const prox_rcc *b, int i, unsigned *done, double *best, prox_vec3 *p1,
+                       prox_vec3 *p2)
+{
+    if (*done >> i & 1) return;
+    *done |= 1u << i;
+    prox_vec3 n, y, v = prox_bframe_vertex(B, i);
+    double d = prox_rcc_point_signed(b, v, &y, &n);
+    if (d < *best) *best = d, *p1 = v, *p2 = y;
+}
+
+/* Candidates of a disjoint pair (box vertices, rim circles against face interiors, edges against the
+ * solid cylinder), the minimum over all of them, with each candidate skipped when a lower bound from the
+ * projections on two directions already reaches the best distance so far: the cheap separating direction
+ * n0 and the direction of the best pair after the seeds (the box's support vertex along n0, then along
+ * the best pair's direction, twice). Skipping such a candidate cannot change the minimum. */
 PROX_API prox_distance_result prox_box_rcc_distance(const prox_box *a, const prox_rcc *b)
 {
     prox_distance_result r = {0};
     prox_bframe B;
     prox_cframe c;
-    prox_vec3 x, y;
-    r.status = box_rcc_setup(a, b, &B, &c, &r.intersect, &x);
+    prox_vec3 x, y, n0;
+    r.status = box_rcc_setup(a, b, &B, &c, &r.intersect, &x, &n0);
     if (r.status != PROX_OK) return r;
     if (r.intersect) {
         r.p1 = r.p2 = x;
         return r;
     }
     double best = INFINITY;
-    for (int i = 0; i < 8; ++i) { /* vertices first: a cheap upper bound for the pruning below */
-        prox_vec3 n, v = prox_bframe_vertex(&B, i);
-        double d = prox_rcc_point_signed(b, v, &y, &n);
-        if (d < best) best = d, r.p1 = v, r.p2 = y;
+    unsigned done = 0;
+    prox_vec3 n = n0;
+    for (int it = 0; it < 3; ++it) { /* seeds: support vertices, a first upper bound and direction */
+        int i = 0;
+        for (int k = 0; k < 3; ++k)
+            if (prox_v3_dot(n, B.a[k]) > 0.0) i |= 1 << k;
+        vertex_cyl(&B, b, i, &done, &best, &r.p1, &r.p2);
+        if (!(best > 0.0)) break;
+        n = prox_v3_divs(prox_v3_sub(r.p2, r.p1), best);
     }
-    for (int top = 0; top < 2; ++top)
+    br_dir D[2] = {br_dir_make(&B, &c, n0), br_dir_make(&B, &c, n)};
+    for (int i = 0; i < 8; ++i)
+        if (fmax(D[0].cmin - D[0].v[i], D[1].cmin - D[1].v[i]) < best) vertex_cyl(&B, b, i, &done, &best, &r.p1, &r.p2);
+    for (int top = 0; top < 2; ++top) {
+        double rmin[2]; /* the rim's least projection: that of its disk */
+        for (int d = 0; d < 2; ++d) rmin[d] = D[d].disk[top];
         for (int f = 0; f < 6; ++f) {
-            double d = rim_face(&c, top, &B, f / 2, (f & 1) ? 1 : -1, &x, &y);
+            int k = f / 2, sgn = (f & 1) ? 1 : -1;
+            unsigned face = 0; /* the face's 4 vertices: bit k of the index = (sgn > 0) */
+            for (int i = 0; i < 8; ++i)
+                if ((i >> k & 1) == (sgn > 0)) face |= 1u << i;
+            if (proj_lb(D, face, rmin) >= best) continue;
+            double d = rim_face(&c, top, &B, k, sgn, &x, &y);
             if (d < best) best = d, r.p1 = y, r.p2 = x;
         }
-    edges_cyl(&B, &c, &best, &r.p1, &r.p2);
+    }
+    edges_cyl(&B, &c, D, &best, &r.p1, &r.p2);
     r.distance = best;
-    prox_vec3 n = prox_v3_normalize(prox_v3_sub(r.p2, r.p1));
+    n = prox_v3_normalize(prox_v3_sub(r.p2, r.p1));
     r.certificate_gap = -prox_rcc_support(b, prox_v3_neg(n)) - prox_bframe_support(&B, n);
     return r;
 }
