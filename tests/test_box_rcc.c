@@ -277,11 +277,9 @@ static void test_random_pruned_exact(void **st)
         }
         double tol = 1e-12 * scale;
         ld ref = brute_box_rcc(&b, &c);
-        /* KNOWN DEFECT, pre-existing (identical before the pruning): an end disk tilted 1e-9 from a box
-         * face (kind 2) misses by up to 4.3e-10 x scale (seed 777, it 158: 1.7e-9 at scale 3.9): rim_face
-         * takes the rim's lowest point from a rejection of length ~1e-9, whose direction is rounding noise
-         * (docs/algorithms/box_speed.md). Checked at 1e-9 x scale there until rim_face is fixed. */
-        assert_near(d.distance, (double)ref, kind == 2 ? 1e-9 * scale : tol);
+        /* kind 2 (an end disk tilted 1e-9 from a box face) once missed by 4.3e-10 x scale (seed 777,
+         * it 158): rim_face's lowest rim point left the rim's plane (docs/algorithms/box_speed.md). */
+        assert_near(d.distance, (double)ref, tol);
         assert_near(prox_v3_dist(d.p1, d.p2), d.distance, tol);
         assert_true(off_box_rcc(&b, d.p1) <= tol);
         ld p2[3] = {d.p2.x, d.p2.y, d.p2.z};

@@ -299,7 +299,13 @@ static void edges_cyl(const prox_bframe *B, const prox_cframe *c, const br_dir D
         double d = edge_lateral(c, s, &x, &y);
         if (d < INFINITY) { /* the foot is on the finite surface: it minimises dist(edge, C) itself */
             if (d < *best) *best = d, *p1 = x, *p2 = y;
-            continue;
+            /* ... unless the edge is within 1e-3 rad of the axis: there the computed foot moves by
+             * ~eps / angle^2 with the rounding of the edge, so a foot reported on the surface may
+             * belong to an edge whose true closest approach lies beyond an end plane (the minimum is
+             * then at a cap, up to angle x length lower: 2.6e-11 at 1e-9 rad in test_box_rcc). A
+             * true foot on the surface needs no cap: the distance is flat around it to second order. */
+            prox_vec3 ed = prox_v3_sub(s->b, s->a);
+            if (prox_v3_norm2(prox_v3_cross(ed, c->w)) > 1e-6 * prox_v3_norm2(ed)) continue;
         }
         for (int t = 0; t < 2; ++t) {
             double dmin[2] = {D[0].disk[t], D[1].disk[t]};
@@ -324,6 +330,11 @@ static double rim_face(const prox_cframe *c, int top, const prox_bframe *B, int 
         double tn = prox_v3_norm(t);
         dir = tn > 0.0 ? prox_v3_divs(t, tn) : c->u;
     }
+    /* For a rim nearly parallel to the face, rj is a short difference whose rounding (~eps / rn
+     * relative) tilts dir out of the rim's plane: r x that tilt put the "rim point" off the cylinder
+     * by up to 1e-9 x scale (1e-9 rad tilts). One more rejection puts it back on the rim; its
+     * in-plane direction error only moves it along a rim whose heights differ by r rn at most. */
+    dir = prox_v3_normalize(prox_v3_reject(dir, c->w));
     *x = prox_v3_mad(ctr, c->r, dir);
     double l[3];
     prox_bframe_local(B, *x, l);
