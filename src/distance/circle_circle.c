@@ -84,11 +84,12 @@ static cc_eval cc_at_cs(const cc_prob *p, double c, double s)
 
 static cc_eval cc_at(const cc_prob *p, double th) { return cc_at_cs(p, cos(th), sin(th)); }
 
-/* Safeguarded Newton on h from th: steps clamped to 0.5 rad, halved until |h| decreases; returns
- * the best angle found and its evaluation. */
-static double cc_polish(const cc_prob *p, double th, cc_eval *out)
+/* Safeguarded Newton on h from the angle's unit vector u: steps clamped to 0.5 rad, halved until |h|
+ * decreases (prox_unit2_step: no trigonometric call per step); returns the best unit vector found
+ * and its evaluation. */
+static prox_unit2 cc_polish_u(const cc_prob *p, prox_unit2 u, cc_eval *out)
 {
-    cc_eval e = cc_at(p, th);
+    cc_eval e = cc_at_cs(p, u.c, u.s);
     for (int it = 0; it < 50 && !e.axis && e.h != 0.0; ++it) {
         if (e.dh == 0.0) break;
         double step = e.h / e.dh;
@@ -100,16 +101,17 @@ static double cc_polish(const cc_prob *p, double th, cc_eval *out)
          * more evaluations per call). */
         int tiny = fabs(step) <= 1e-9;
         for (int k = 0; k < (tiny ? 1 : 6); ++k, step *= 0.5) {
-            cc_eval en = cc_at(p, th - step);
+            prox_unit2 un = prox_unit2_step(u, step);
+            cc_eval en = cc_at_cs(p, un.c, un.s);
             if (!en.axis && fabs(en.h) < fabs(e.h)) {
-                th -= step, e = en, moved = 1;
+                u = un, e = en, moved = 1;
                 break;
             }
         }
         if (!moved || fabs(step) <= 4.0 * DBL_EPSILON) break;
     }
     *out = e;
-    return th;
+    return u;
 }
 
 /* Local refinement used by the RCC-RCC fast path: a local MINIMUM of g near u (Newton on h alone
@@ -267,7 +269,8 @@ int prox_circle_circle_stationary(const prox_fcircle *a, const prox_fcircle *b, 
     const double tol = CC_STAT_TOL * p.scale;
     for (int i = 0; i < ns; ++i) {
         cc_eval e;
-        double t = cc_polish(&p, starts[i], &e);
+        prox_unit2 u = cc_polish_u(&p, (prox_unit2){cos(starts[i]), sin(starts[i])}, &e);
+        double t = atan2(u.s, u.c);
         if (e.axis || !(fabs(e.h) <= tol)) continue; /* spurious root of the squared equation */
         cc_add(prox_prim_wrap_2pi(t), e.g, th, gs, count);
     }

@@ -38,23 +38,44 @@ static double cl_h_cs(const cl_coef *k, double c, double s, double *dh)
 }
 static double cl_h(const cl_coef *k, double th, double *dh) { return cl_h_cs(k, cos(th), sin(th), dh); }
 
-/* Newton on h from th; returns the iterate with the smallest |h| (steps limited to 0.5 rad). */
-static double cl_polish(const cl_coef *k, double th)
+/* Newton on h from the angle's unit vector a; returns the iterate with the smallest |h| (steps
+ * limited to 0.5 rad; prox_unit2_step: no trigonometric call per step). */
+static prox_unit2 cl_polish_u(const cl_coef *k, prox_unit2 a)
 {
-    double dh, h = cl_h(k, th, &dh), best = th, hb = fabs(h);
+    double dh, h = cl_h_cs(k, a.c, a.s, &dh), hb = fabs(h);
+    prox_unit2 best = a;
     for (int it = 0; it < 12 && hb > 0.0; ++it) {
         if (!(fabs(dh) > 0.0)) break;
         double step = h / dh;
         if (!(fabs(step) <= 0.5)) break;
-        th -= step;
-        h = cl_h(k, th, &dh); /* one evaluation per iteration: value and derivative */
+        a = prox_unit2_step(a, step);
+        h = cl_h_cs(k, a.c, a.s, &dh); /* one evaluation per iteration: value and derivative */
         if (fabs(h) < hb) {
             hb = fabs(h);
-            best = th;
+            best = a;
         }
-        if (fabs(step) <= 4.0 * DBL_EPSILON * (1.0 + fabs(th))) break;
+        if (fabs(step) <= 8.0 * DBL_EPSILON) break;
     }
     return best;
+}
+
+/* The same from an angle, returning an angle in (-pi, pi]. */
+static double cl_polish(const cl_coef *k, double th)
+{
+    prox_unit2 a = cl_polish_u(k, (prox_unit2){cos(th), sin(th)});
+    return atan2(a.s, a.c);
+}
+
+/* The angle 2 atan(t) of a root t of the half-angle polynomial, as a unit vector without a
+ * trigonometric call: (cos, sin) = ((1 - t^2), 2t) / (1 + t^2), written in 1/t for |t| > 1. */
+static prox_unit2 unit2_of_half_tan(double t)
+{
+    if (fabs(t) <= 1.0) {
+        double q = 1.0 / (1.0 + t * t);
+        return (prox_unit2){(1.0 - t * t) * q, 2.0 * t * q};
+    }
+    double u = 1.0 / t, q = 1.0 / (u * u + 1.0);
+    return (prox_unit2){(u * u - 1.0) * q, 2.0 * u * q};
 }
 
 /* Sorts, merges angles closer than CL_DEDUP (also across 0 / 2pi) and keeps at most 4 (smallest |h|). */
@@ -151,7 +172,10 @@ int prox_circle_line_stationary(const prox_fcircle *c, prox_vec3 p, prox_vec3 w,
     double roots[8], cand[12];
     int nr = 0, n = 0;
     if (prox_poly_real_roots(poly, 4, roots, &nr) == PROX_OK) {
-        for (int i = 0; i < nr; ++i) cand[n++] = cl_polish(&k, 2.0 * atan(roots[i]));
+        for (int i = 0; i < nr; ++i) {
+            prox_unit2 a = cl_polish_u(&k, unit2_of_half_tan(roots[i]));
+            cand[n++] = atan2(a.s, a.c);
+        }
         if (fabs(k.C - k.B) <= CL_PI_TOL * kmax) cand[n++] = cl_polish(&k, PROX_PI);
     } else {
         n = cl_grid(&k, cand);
