@@ -4,10 +4,12 @@
  * right-circular cylinders in space", J. Mech. Robot. 8 (2016), Sec. 2 (Figs. 3-5) and Sec. 3.
  *
  * How a query flows (docs/design.md has the long version):
- *  1. Both cylinders are prepared once (unit axis, height, rims, disks) in a frame centred on A's
+ *  1. Both cylinders are validated and prepared (rims only when needed) in a frame centred on A's
  *     centre, so that pairs far from the origin keep their relative precision.
  *  2. Agarwal's first level: P(S1,S2) from the common perpendicular of the axes gives the case
- *     (1, 2.1/2.2, 3) and the ends of each cylinder nearest to the feet.
+ *     (1, 2.1/2.2, 3).  Case 1 with well-conditioned feet is decided at once (case1_fast): the
+ *     infinite solid cylinders are L - rA - rB apart and contain the finite ones, so the S-S pair is
+ *     the minimum; overlapping Case-1 pairs get their common point and containment there too.
  *  3. Candidates.  For two DISJOINT convex solids the closest pair (p1, p2) lies on a pair of features
  *     (lateral surface S, end-disk interior D, rim circle C) where the distance is stationary, so it is
  *     one of: S-S on the common perpendicular, C-S (stationary points of circle-to-axis distance),
@@ -15,15 +17,18 @@
  *     points).  D-D and D-S contacts (parallel faces, perpendicular axes) are limits that always also
  *     attain their minimum at a C-D or C-S candidate.  Every candidate is a genuine pair of points of
  *     A x B, so min over candidates = the distance exactly, whatever subset of candidates was wrong.
- *  4. Agarwal's hierarchy picks the candidates it believes decide (Case 1: S-S; Case 2/3: the ends
- *     nearest to the feet).  Its pick is CERTIFIED by duality: along the contact normal n of the best
- *     candidate the projections of A and B are separated by gap(n) = -h_B(-n) - h_A(n) <= distance
- *     <= |p2 - p1|; when the two agree within a few ulps of the scale, the answer is exact and no other
- *     candidate can be better.  Otherwise (the hierarchy is a heuristic: docs/errata.md) every other
- *     candidate group is evaluated, skipping groups whose cheap lower bound cannot beat the best.
- *  5. Overlap: any candidate point that lies inside the other solid is a common point; failing that,
- *     alternating projections between the solids find one.  Containment (Agarwal Fig. 2) is decided
- *     exactly: A lies in B iff both rims of A lie in B (B convex, A the hull of its rims).
+ *  4. Certificate: along the contact normal n of the best candidate the projections of A and B are
+ *     separated by gap(n) = -h_B(-n) - h_A(n) <= distance <= |p2 - p1| (duality); when the two agree
+ *     within a few ulps of the scale, the answer is exact and no other candidate can be better.
+ *  5. Order of the search, stopping at the first certificate: the PREDICTION (the features of each
+ *     cylinder supporting the capsule normal, then the best candidate's normal, name the ends and the
+ *     feature pair; local minimisers started from the predicted normal) settles ~86 % of random pairs;
+ *     then Agarwal's hierarchy (Case 2/3: the ends nearest to the feet; a heuristic, docs/errata.md),
+ *     every other group by local Newton, and the complete quartics / degree-8 polynomials, skipping
+ *     groups whose cheap lower bound cannot beat the best.
+ *  6. Overlap: any candidate point that lies inside the other solid is a common point; failing that,
+ *     Douglas-Rachford projections between the shrunk solids find one.  Containment (Agarwal Fig. 2)
+ *     is decided exactly: A lies in B iff both rims of A lie in B (B convex, A the hull of its rims).
  */
 #include <float.h>
 #include <stddef.h>
