@@ -240,3 +240,49 @@ PROX_API prox_prim_result prox_circle_segment(const prox_circle *c, const prox_s
     best.status = PROX_OK;
     return best;
 }
+
+/* Farthest distance from the point (q0, q1) >= 0 to the ellipse x^2/a^2 + y^2/b^2 = 1, a >= b >= 0.
+ * The farthest point lies in the opposite quadrant, at x = -a^2 q0 / tau, y = -b^2 q1 / (tau + c),
+ * c = a^2 - b^2, where tau > 0 is the root of G(tau) = (a q0 / tau)^2 + (b q1 / (tau + c))^2 = 1
+ * (Lagrange multiplier mu = tau + a^2 > a^2; G is convex and decreasing, so the root is unique and
+ * bracketed by [a q0, sqrt(a^2 q0^2 + b^2 q1^2)]; Newton from the left end approaches it monotonically).
+ * q0 = 0 with G(0+) <= 1 is the limit tau = 0: two farthest points share y = -b^2 q1 / c. The point
+ * is put back on the ellipse before measuring, so that the error left in tau is of second order. */
+static double ellipse_farthest(double a, double b, double q0, double q1)
+{
+    double c = (a - b) * (a + b);
+    if (b == 0.0) return hypot(a + q0, q1); /* a segment: its far end */
+    if (!(q0 > 0.0) && b * q1 <= c) { /* the limit case (c > 0 here unless q1 = 0 too) */
+        double y = c > 0.0 ? -b * b * q1 / c : 0.0, x = a * sqrt(fmax(0.0, 1.0 - (y / b) * (y / b)));
+        return hypot(x, q1 - y);
+    }
+    double aq = a * q0, bq = b * q1, tau = aq > 0.0 ? aq : fmax(bq - c, 0.0);
+    for (int it = 0; it < 100; ++it) {
+        double g0 = tau > 0.0 ? aq / tau : 0.0, g1 = bq / (tau + c);
+        double G = g0 * g0 + g1 * g1 - 1.0;
+        if (!(G > 0.0)) break;
+        double dG = 2.0 * ((tau > 0.0 ? g0 * g0 / tau : 0.0) + g1 * g1 / (tau + c));
+        double step = G / dG;
+        if (!(step > 1e-17 * tau)) break;
+        tau += step;
+    }
+    double x = tau > 0.0 ? a * aq / tau : a, y = b * bq / (tau + c); /* magnitudes of the point */
+    double k = 1.0 / sqrt((x / a) * (x / a) + (y / b) * (y / b));
+    return hypot(q0 + k * x, q1 + k * y);
+}
+
+/* Max over the circle C of the distance to the line (base, unit w), in closed form up to one
+ * monotone root (replaces the quartic of Agarwal Sec. 3.3 where only the maximum is wanted): along w the circle projects onto an ellipse with semi-axes r (along u, normal to
+ * w and to the rim's normal n) and r |n.w| (along w x u), centred at the rim centre's offset E from
+ * the axis; the answer is the ellipse's farthest point from the axis (ellipse_farthest). Within
+ * 1e-8 rad of n || w the ellipse is a circle to 5e-17 r: |E| + r. */
+double prox_circle_line_max_dist(const prox_fcircle *C, prox_vec3 base, prox_vec3 w)
+{
+    prox_vec3 E = prox_v3_reject(prox_v3_sub(C->c, base), w);
+    prox_vec3 x = prox_v3_reject(prox_v3_cross(w, C->n), w);
+    double sn = prox_v3_norm(x), r = C->r;
+    if (!(sn > 1e-8)) return prox_v3_norm(E) + r;
+    prox_vec3 u = prox_v3_scale(x, 1.0 / sn), e = prox_v3_cross(w, u);
+    double b = r * fabs(prox_v3_dot(C->n, w));
+    return ellipse_farthest(r, fmin(b, r), fabs(prox_v3_dot(E, u)), fabs(prox_v3_dot(E, e)));
+}

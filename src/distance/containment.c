@@ -6,7 +6,8 @@
  * inside B that distance is concave, so its minimum over A is attained at an extreme point of A.
  * Point clearances: box min_k (h_k - |l_k|); cylinder min(t, h - t, r - rho); sphere R - |x - c|.
  * A rim in a cylinder: axial extent t_c +- r |w_A x w_B|, and the largest distance of the rim from the
- * axis, attained at a stationary angle of the circle-to-line distance (quartic of Agarwal Sec. 3.3). */
+ * axis: the farthest point from the axis of the ellipse the rim projects onto
+ * (prox_circle_line_max_dist, circle_segment.c). */
 #include "distance/box_internal.h"
 #include "distance/stationary.h"
 #include "prox/support.h"
@@ -136,26 +137,6 @@ PROX_API prox_contain_result prox_rcc_in_sph(const prox_rcc *a, const prox_sph *
     return finish(c, prox_shape_from_rcc(*a), prox_shape_from_sph(*b));
 }
 
-/* Max over the rim circle C of the distance to the line (base, unit w): the squared distance is smooth
- * and 2pi-periodic in the angle, so its maximum is at a stationary angle, and prox_circle_line_stationary
- * returns every one of them (Agarwal Sec. 3.3 quartic, polished; the same test as circle_in_cyl of
- * rcc_rcc.c). A constant distance (the line is C's axis) is read at any angle. */
-static double rim_max_axis_dist(const prox_fcircle *C, prox_vec3 base, prox_vec3 w)
-{
-    double th[4] = {0.0};
-    int cnt = 0;
-    if (prox_circle_line_stationary(C, base, w, th, &cnt) != 0 || cnt == 0) {
-        th[0] = 0.0;
-        cnt = 1;
-    }
-    double best = 0.0;
-    for (int i = 0; i < cnt; ++i) {
-        prox_vec3 d = prox_v3_sub(prox_fcircle_point(C, th[i]), base);
-        best = fmax(best, prox_v3_norm(prox_v3_reject(d, w)));
-    }
-    return best;
-}
-
 PROX_API prox_contain_result prox_rcc_in_rcc(const prox_rcc *a, const prox_rcc *b)
 {
     prox_status st = prox_valid2(prox_rcc_validate(a), prox_rcc_validate(b));
@@ -169,7 +150,7 @@ PROX_API prox_contain_result prox_rcc_in_rcc(const prox_rcc *a, const prox_rcc *
         double tc = prox_v3_dot(prox_v3_sub(ctr, B.base), B.w);
         c = fmin(c, fmin(tc - s, B.h - tc - s));
         prox_fcircle C = prox_fcircle_make(ctr, A.w, A.r);
-        c = fmin(c, B.r - rim_max_axis_dist(&C, B.base, B.w));
+        c = fmin(c, B.r - prox_circle_line_max_dist(&C, B.base, B.w));
     }
     return finish(c, prox_shape_from_rcc(*a), prox_shape_from_rcc(*b));
 }

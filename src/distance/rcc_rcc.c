@@ -453,10 +453,8 @@ static double rim_lat_lower_bound(const prox_fcircle *C, const cyl *lc)
 
 /* ---- containment (Agarwal Fig. 2), exact ---- */
 
-/* 1 when circle C lies in the closed solid cylinder k (within tol): its axial range within [0, h]
- * and its farthest point from k's axis (a stationary point of the circle-line distance) within r. */
 /* The cheap tests of circle_in_cyl for the circle (centre c, unit normal n, radius r): 1 inside, 0
- * not inside, -1 undecided (the quartic is needed). */
+ * not inside, -1 undecided (the farthest point from the axis is needed). */
 static int circle_in_cyl_quick(prox_vec3 c, prox_vec3 n, double r, const cyl *k, double tol)
 {
     prox_vec3 dc = prox_v3_sub(c, k->b);
@@ -477,21 +475,13 @@ static int circle_in_cyl_quick(prox_vec3 c, prox_vec3 n, double r, const cyl *k,
     return -1;
 }
 
+/* 1 when circle C lies in the closed solid cylinder k (within tol): its axial range within [0, h]
+ * and its farthest point from k's axis (prox_circle_line_max_dist) within r. */
 static int circle_in_cyl(const prox_fcircle *C, const cyl *k, double tol)
 {
     int quick = circle_in_cyl_quick(C->c, C->n, C->r, k, tol);
     if (quick >= 0) return quick;
-    double th[4];
-    int cnt = 0;
-    if (prox_circle_line_stationary(C, k->b, k->w, th, &cnt)) {
-        th[0] = 0.0;
-        cnt = 1;
-    }
-    for (int i = 0; i < cnt; ++i) {
-        prox_vec3 d = prox_v3_sub(prox_fcircle_point(C, th[i]), k->b);
-        if (prox_v3_norm(prox_v3_mad(d, -prox_v3_dot(d, k->w), k->w)) > k->r + tol) return 0;
-    }
-    return 1;
+    return prox_circle_line_max_dist(C, k->b, k->w) <= k->r + tol; /* the farthest rim point */
 }
 
 static int cyl_in_cyl(const cyl *in, const cyl *out, double tol)
@@ -866,25 +856,28 @@ static void fill_disjoint(const query *q, prox_rcc_result *res, prox_vec3 origin
     res->point_set = is_point_set(q);
 }
 
-/* Containment of in in out by the cheap tests alone (Agarwal Fig. 2, as containment() decides it):
- * 1 / 0, or -1 when a rim needs the quartic. */
-static int cyl_in_cyl_quick(const cyl *in, const cyl *out)
+/* Containment of in in out (Agarwal Fig. 2, as containment() decides it) without the rims' frames:
+ * the cheap tests, and the farthest rim point from the axis only when they do not decide. */
+static int cyl_in_cyl_lean(const cyl *in, const cyl *out)
 {
     if (!cyl_contains(out, in->c, 0.0)) return 0; /* a nested cylinder contains its centre */
-    int i0 = circle_in_cyl_quick(in->cap[0], in->w, in->r, out, 0.0);
-    if (i0 == 0) return 0;
-    int i1 = circle_in_cyl_quick(in->cap[1], in->w, in->r, out, 0.0);
-    if (i1 == 0) return 0;
-    return i0 < 0 || i1 < 0 ? -1 : 1;
+    for (int e = 0; e < 2; ++e) {
+        int q = circle_in_cyl_quick(in->cap[e], in->w, in->r, out, 0.0);
+        if (q < 0) { /* prox_circle_line_max_dist reads the centre, normal and radius only */
+            prox_fcircle C = {.c = in->cap[e], .n = in->w, .r = in->r};
+            q = prox_circle_line_max_dist(&C, out->b, out->w) <= out->r;
+        }
+        if (!q) return 0;
+    }
+    return 1;
 }
 
 /* Case 1 decided from the prepared cylinders alone, before the query state, the rims and the
  * candidate machinery exist (Agarwal Sec. 2: both feet of the common perpendicular on the finite
  * axes).  Disjoint: the S-S pair along the unit common normal is the minimum (the infinite solid
  * cylinders are L - rA - rB apart, docs/errata.md 8).  Overlapping: the point between the axes is a
- * common point, and containment needs only the cheap tests in most pairs.  Returns 0, leaving the
- * general path to answer, when the axes are within 1e-3 rad of parallel (ill-conditioned feet), not
- * in Case 1, or a test is undecided. */
+ * common point, and containment is decided by cyl_in_cyl_lean.  Returns 0, leaving the general path
+ * to answer, when the axes are within 1e-3 rad of parallel (ill-conditioned feet) or not in Case 1. */
 static int case1_fast(const cyl *A, const cyl *B, double scale, prox_vec3 origin, prox_rcc_result *res)
 {
     prox_vec3 n = prox_v3_cross(A->w, B->w);
@@ -911,8 +904,7 @@ static int case1_fast(const cyl *A, const cyl *B, double scale, prox_vec3 origin
     prox_vec3 x = between_axes(f1, v, L, A->r, B->r);
     double eps = 64.0 * DBL_EPSILON * scale;
     if (!cyl_contains(A, x, eps) || !cyl_contains(B, x, eps)) return 0;
-    int ab = cyl_in_cyl_quick(A, B), ba = ab == 1 ? 0 : cyl_in_cyl_quick(B, A);
-    if (ab < 0 || ba < 0) return 0;
+    int ab = cyl_in_cyl_lean(A, B), ba = ab ? 0 : cyl_in_cyl_lean(B, A);
     res->a_in_b = ab;
     res->b_in_a = ba;
     res->distance = 0.0;

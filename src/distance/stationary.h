@@ -59,6 +59,11 @@ int prox_circle_line_stationary(const prox_fcircle *c, prox_vec3 p, prox_vec3 w,
  * whose answer is then certified. */
 prox_unit2 prox_circle_line_local(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, prox_unit2 a0);
 
+/* The largest distance from the circle c to the infinite line through p with unit direction w
+ * (the global maximum of the same function, without the quartic: the farthest point of the ellipse
+ * c projects onto, one bracketed monotone root). */
+double prox_circle_line_max_dist(const prox_fcircle *c, prox_vec3 p, prox_vec3 w);
+
 /* Every stationary angle theta_a on circle a of g(theta_a) = dist^2(point_a(theta_a), circle b)
  * (Agarwal Sec. 3.5, degree 8 in tan(theta_a/2), rooted by prox_poly_real_roots; the angle pi is
  * included when stationary), polished by Newton on the trigonometric form; count <= 8.
