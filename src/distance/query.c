@@ -6,9 +6,12 @@
  * distance: moving B by (margin - sd) along the signed-distance normal leaves the supporting planes at
  * the witnesses exactly `margin` apart, so dist(A, B') = margin. */
 #include "distance/box_internal.h"
-#include "prox/support.h"
+#include "distance/query_internal.h"
 #include "prox/distance.h"
 #include "prox/sat.h"
+#include "prox/support.h"
+
+#include <stddef.h>
 
 /* Kind after RPP -> BOX, and the box itself. */
 typedef struct norm_shape {
@@ -166,7 +169,8 @@ PROX_API prox_contain_result prox_shape_contains(const prox_shape *a, const prox
     }
 }
 
-PROX_API prox_relation_result prox_shape_relation(const prox_shape *a, const prox_shape *b, double tol)
+prox_relation_result prox_shape_relation_with_signed(const prox_shape *a, const prox_shape *b, double tol,
+                                                     prox_signed_result *s_out)
 {
     prox_relation_result r = {0};
     if (isnan(tol) || isinf(tol)) {
@@ -174,6 +178,7 @@ PROX_API prox_relation_result prox_shape_relation(const prox_shape *a, const pro
         return r;
     }
     prox_signed_result s = prox_shape_signed_distance(a, b);
+    if (s_out) *s_out = s;
     r.status = s.status;
     if (r.status != PROX_OK) return r;
     r.tol = tol >= 0.0 ? tol : PROX_QUERY_REL_TOL * prox_shape_pair_scale(a, b);
@@ -198,6 +203,11 @@ PROX_API prox_relation_result prox_shape_relation(const prox_shape *a, const pro
         r.contact = 1;
     }
     return r;
+}
+
+PROX_API prox_relation_result prox_shape_relation(const prox_shape *a, const prox_shape *b, double tol)
+{
+    return prox_shape_relation_with_signed(a, b, tol, NULL);
 }
 
 PROX_API prox_reposition_result prox_shape_reposition(const prox_shape *a, const prox_shape *b, double margin)

@@ -11,6 +11,7 @@
 
 #include "prox/scene.h"
 #include "prox/support.h"
+#include "distance/query_internal.h"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -154,13 +155,13 @@ static void take_signed(prox_pair_result *r, const prox_signed_result *s)
 /* RELATION mode: the relation first, then the one further solver that its case needs. */
 static void relation_stage(prox_pair_result *r, const prox_shape *a, const prox_shape *b)
 {
-    prox_relation_result rel = prox_shape_relation(a, b, -1.0);
+    prox_signed_result s;
+    prox_relation_result rel = prox_shape_relation_with_signed(a, b, -1.0, &s);
     r->status = rel.status;
     if (rel.status != PROX_OK) return;
     r->relation = rel.relation;
     r->signed_distance = rel.signed_distance;
-    if (rel.relation == PROX_REL_CROSSING) {
-        prox_signed_result s = prox_shape_signed_distance(a, b);
+    if (rel.relation == PROX_REL_CROSSING) { /* the relation's own signed distance: computed once */
         take_signed(r, &s);
         r->distance = 0.0;
         r->intersect = 1;
