@@ -505,6 +505,66 @@ static prox_vec3 cyl_project(const cyl *k, prox_vec3 x, double delta)
     return prox_v3_add(prox_v3_mad(k->b, tc, k->w), radial);
 }
 
+/* The part of the axis segment of `seg` inside the solid cylinder k (slab of k's height, then the
+ * quadratic of k's radius): 1 and its midpoint in *x when not empty.  A point of it is in both. */
+static int axis_inside(const cyl *seg, const cyl *k, prox_vec3 *x)
+{
+    prox_vec3 o = prox_v3_sub(seg->b, k->b), d = prox_v3_scale(seg->w, seg->h);
+    double t0 = prox_v3_dot(o, k->w), dt = prox_v3_dot(d, k->w), lo = 0.0, hi = 1.0;
+    if (dt != 0.0) {
+        double u = -t0 / dt, v = (k->h - t0) / dt;
+        lo = fmax(lo, fmin(u, v));
+        hi = fmin(hi, fmax(u, v));
+    } else if (t0 < 0.0 || t0 > k->h) {
+        return 0;
+    }
+    if (!(lo <= hi)) return 0;
+    prox_vec3 ro = prox_v3_mad(o, -t0, k->w), rd = prox_v3_mad(d, -dt, k->w);
+    double A = prox_v3_norm2(rd), B = prox_v3_dot(ro, rd), C = prox_v3_norm2(ro) - k->r * k->r;
+    if (A > 0.0) {
+        double disc = B * B - A * C;
+        if (disc < 0.0) return 0;
+        double sq = sqrt(disc), qq = -(B + (B >= 0.0 ? sq : -sq)), r1 = qq / A, r2 = qq != 0.0 ? C / qq : r1;
+        lo = fmax(lo, fmin(r1, r2));
+        hi = fmin(hi, fmax(r1, r2));
+    } else if (C > 0.0) {
+        return 0;
+    }
+    if (!(lo <= hi)) return 0;
+    *x = prox_v3_mad(seg->b, 0.5 * (lo + hi), d);
+    return 1;
+}
+
+/* Where the mid-planes of two crossing cylinders meet, the chords of the two mid-disks (radius r
+ * around each centre) on that line: a point of their overlap lies in both solids (a mid-disk is in
+ * its cylinder).  The case of two thin disks crossing, which neither axis reaches. */
+static int middisks_meet(const cyl *A, const cyl *B, prox_vec3 *x)
+{
+    prox_vec3 l = prox_v3_cross(A->w, B->w);
+    double ll = prox_v3_norm2(l);
+    if (!(ll > 1e-24)) return 0;
+    /* the point of the line nearest to A's centre: in both planes, x = cA + a (wA x l) with
+     * (x - cB).wB = 0 */
+    prox_vec3 m = prox_v3_cross(A->w, l);
+    double den = prox_v3_dot(m, B->w);
+    if (den == 0.0) return 0;
+    prox_vec3 p = prox_v3_mad(A->c, prox_v3_dot(prox_v3_sub(B->c, A->c), B->w) / den, m);
+    prox_vec3 u = prox_v3_scale(l, 1.0 / sqrt(ll));
+    double lo = -INFINITY, hi = INFINITY;
+    const cyl *k2[2] = {A, B};
+    for (int i = 0; i < 2; ++i) { /* |p + t u - c|^2 <= r^2 on the line (u is in the plane) */
+        prox_vec3 e = prox_v3_sub(p, k2[i]->c);
+        double b = prox_v3_dot(e, u), c = prox_v3_norm2(e) - k2[i]->r * k2[i]->r, disc = b * b - c;
+        if (disc < 0.0) return 0;
+        double sq = sqrt(disc);
+        lo = fmax(lo, -b - sq);
+        hi = fmin(hi, -b + sq);
+    }
+    if (!(lo <= hi)) return 0;
+    *x = prox_v3_mad(p, 0.5 * (lo + hi), u);
+    return 1;
+}
+
 /* Alternating projections between the solids shrunk by a margin: when the shrunk solids still
  * intersect, the iterates enter them and so lie strictly inside both originals after finitely
  * many steps (plain projections only approach the intersection from outside).  Margins shrink from
@@ -512,6 +572,14 @@ static prox_vec3 cyl_project(const cyl *k, prox_vec3 x, double delta)
  * iterate in *last. */
 static int find_common_point(query *q, prox_vec3 x, int iters, prox_vec3 *last)
 {
+    /* Exact candidates first, for intersections too thin for the projections to enter quickly
+     * (a needle through a pancake, two pancakes crossing): each axis clipped by the other solid,
+     * the two mid-disks' common chord. */
+    prox_vec3 c;
+    if (axis_inside(&q->A, &q->B, &c)) note_common(q, c);
+    if (!q->overlap && axis_inside(&q->B, &q->A, &c)) note_common(q, c);
+    if (!q->overlap && middisks_meet(&q->A, &q->B, &c)) note_common(q, c);
+    if (q->overlap) return 1;
     double dim = fmin(fmin(q->A.r, 0.5 * q->A.h), fmin(q->B.r, 0.5 * q->B.h));
     static const double margins[] = {0.25, 0.02, 1e-3, 1e-5, 0.0};
     for (int m = 0; m < 5; ++m) {
@@ -830,8 +898,13 @@ static prox_status search(query *q, const prox_rcc *a, const prox_rcc *b, prox_a
          * verdict (src/sat) decides; only an intersecting pair needs a common point. */
         prox_sat_result v = prox_rcc_sat(a, b);
         if (v.status == PROX_OK && v.intersect &&
-            !find_common_point(q, prox_v3_scale(prox_v3_add(q->best.p1, q->best.p2), 0.5), 200, &last))
-            note_common(q, last); /* within the verdict's touching band */
+            !find_common_point(q, prox_v3_scale(prox_v3_add(q->best.p1, q->best.p2), 0.5), 200, &last)) {
+            /* The verdict is certified: the solids intersect even though no common point was
+             * found (within its touching band, or an intersection the searches did not enter).
+             * Report the overlap, with the last iterate (in A, nearest to B) as the point. */
+            q->overlap = 1;
+            q->common = last;
+        }
     }
     if (!q->overlap && !q->have_best && !find_common_point(q, q->A.c, 1000, &last)) {
         q->overlap = 1; /* no candidate at all happens only for overlapping solids: touching limit */
