@@ -2,6 +2,7 @@
  * through the side with no edge crossing the surface, box inside, cylinder inside) and exact distances
  * of rim-to-face, corner-to-rim, edge-to-lateral contacts. Random pairs are in test_query.c. */
 #include "test_util.h"
+#include "prox/support.h"
 #include "prox/query.h"
 
 static prox_box aabb(double x0, double x1, double y0, double y1, double z0, double z1)
@@ -290,6 +291,29 @@ static void test_random_pruned_exact(void **st)
     assert_true(checked > 800);
 }
 
+/* Regression (session 2): a needle (r 0.0034, h 596) whose top rim is 2.05e-8 from a long plate
+ * (864 x 10.8 x 2.1) was reported touching: the radial clip of the plate's long edges against the
+ * cylinder used B^2 - A C, which cancels to 1e-5 relative there. The gap is confirmed by the
+ * independent support-function method. */
+static void test_needle_beside_plate(void **st)
+{
+    (void)st;
+    prox_rcc c = {{0, 0, 0}, {-35.833814265014752, -583.70178548520857, -115.85831320115065}, 0.0034320752276763866};
+    prox_box b = {{-555.05371491268852, -584.09916867516915, 572.37096099408291},
+                  {{518.7335007632613, -10.549043259054548, -688.4239470361905},
+                   {-1.2297738680016161, 10.615748674979274, -1.0893155284963378},
+                   {1.7134027987622187, 0.33044850359389893, 1.2860004656602289}}};
+    prox_test_result t = prox_box_rcc_test(&b, &c);
+    prox_distance_result d = prox_box_rcc_distance(&b, &c);
+    prox_shape A = prox_shape_from_box(b), B = prox_shape_from_rcc(c);
+    prox_signed_result s = prox_shape_signed_distance_support(&A, &B);
+    assert_int_equal(t.status, PROX_OK);
+    assert_false(t.intersect);
+    assert_false(d.intersect);
+    assert_near(d.distance, s.sd, 1e-12 * 862.0);
+    assert_true(d.distance > 2e-8);
+}
+
 int main(void)
 {
     test_init();
@@ -297,6 +321,7 @@ int main(void)
                                        cmocka_unit_test(test_rim_to_face), cmocka_unit_test(test_corner_to_rim),
                                        cmocka_unit_test(test_edge_to_side),
                                        cmocka_unit_test(test_edge_paths),
-                                       cmocka_unit_test(test_random_pruned_exact)};
+                                       cmocka_unit_test(test_random_pruned_exact),
+                                       cmocka_unit_test(test_needle_beside_plate)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -480,6 +480,70 @@ static void test_relation_internal_tangency(void **st)
     expect_rel(&F, &B, PROX_REL_DISJOINT, 0, 0.0);
 }
 
+/* Every ordered pair of kinds with extreme sizes (edges, radii, heights log-uniform over 1e-3 .. 1e3):
+ * a disjoint pair is moved along its proximal direction to a constructed gap (0 or 1e-12 .. 1e-2 x
+ * scale); the distance must equal the gap (1e-12 of the scale, plus the rounding of the move) and
+ * the verdict must say disjoint beyond 1e-9 x scale; for overlapping pairs, containment and the
+ * relation must agree. Found in session 2: a needle beside a long plate reported touching at a
+ * 2.4e-11 x scale gap (cancellation in the segment-cylinder clip), and BOX-RCC's touching band was
+ * 3.5e-12 x scale. */
+static prox_shape extreme_shape(test_rng *g, int kind, prox_vec3 c)
+{
+    if (kind == 0) {
+        prox_rcc x = {c, prox_v3_scale(test_unit(g), pow(10.0, test_range(g, -3, 3))), pow(10.0, test_range(g, -3, 3))};
+        return prox_shape_from_rcc(x);
+    }
+    if (kind == 1) {
+        test_rot R = test_random_rot(g);
+        prox_box b;
+        b.corner = c;
+        for (int k = 0; k < 3; ++k)
+            b.edge[k] = prox_v3_scale(test_rot_apply(&R, prox_v3(k == 0, k == 1, k == 2)), pow(10.0, test_range(g, -3, 3)));
+        return prox_shape_from_box(b);
+    }
+    prox_sph s = {c, pow(10.0, test_range(g, -3, 3))};
+    return prox_shape_from_sph(s);
+}
+
+static void test_extreme_near_touching(void **st)
+{
+    (void)st;
+    test_rng g = test_rng_seed(99991);
+    for (int ka = 0; ka < 3; ++ka)
+        for (int kb = 0; kb < 3; ++kb) {
+            int moved = 0, bad = 0;
+            for (int i = 0; i < 4000; ++i) {
+                prox_shape A = extreme_shape(&g, ka, prox_v3(0, 0, 0));
+                double sz = prox_shape_size(&A);
+                prox_shape B = extreme_shape(&g, kb, prox_v3_scale(test_unit(&g), pow(10.0, test_range(&g, -2, 1)) * sz));
+                prox_distance_result d = prox_shape_distance(&A, &B);
+                assert_int_equal(d.status, PROX_OK);
+                double S = prox_shape_pair_scale(&A, &B);
+                if (!(d.distance > 0.0)) {
+                    prox_contain_result ab = prox_shape_contains(&A, &B), ba = prox_shape_contains(&B, &A);
+                    prox_relation_result rel = prox_shape_relation(&A, &B, -1.0);
+                    int nested = rel.relation == PROX_REL_A_IN_B || rel.relation == PROX_REL_B_IN_A;
+                    if ((ab.inside || ba.inside) != nested) ++bad;
+                    continue;
+                }
+                prox_vec3 n = prox_v3_scale(prox_v3_sub(d.p2, d.p1), 1.0 / d.distance);
+                double gap = test_uniform(&g) < 0.2 ? 0.0 : pow(10.0, test_range(&g, -12, -2)) * S;
+                prox_shape B2;
+                assert_int_equal(prox_shape_translated(&B, prox_v3_scale(n, gap - d.distance), &B2), PROX_OK);
+                prox_distance_result e = prox_shape_distance(&A, &B2);
+                prox_test_result t = prox_shape_test(&A, &B2);
+                double S2 = prox_shape_pair_scale(&A, &B2);
+                ++moved;
+                if (fabs(e.distance - gap) > 2e-12 * S2 + 1e-12 * S) {
+                    if (bad++ < 3) print_error("kinds %d-%d pair %d: gap %.3g x scale, distance %.17g\n", ka, kb, i, gap / S2, e.distance);
+                }
+                if (gap > 1e-9 * S2 && t.intersect) ++bad;
+            }
+            print_message("extreme kinds %d-%d: %d moved, %d bad\n", ka, kb, moved, bad);
+            assert_int_equal(bad, 0);
+        }
+}
+
 int main(void)
 {
     test_init();
@@ -490,7 +554,7 @@ int main(void)
         cmocka_unit_test(test_random_sph_rcc), cmocka_unit_test(test_random_box_rcc),
         cmocka_unit_test(test_random_rcc_box), cmocka_unit_test(test_invalid_shapes),
         cmocka_unit_test(test_relation_cases), cmocka_unit_test(test_null_args),
-        cmocka_unit_test(test_relation_internal_tangency),
+        cmocka_unit_test(test_relation_internal_tangency), cmocka_unit_test(test_extreme_near_touching),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -520,14 +520,14 @@ static int axis_inside(const cyl *seg, const cyl *k, prox_vec3 *x)
     }
     if (!(lo <= hi)) return 0;
     prox_vec3 ro = prox_v3_mad(o, -t0, k->w), rd = prox_v3_mad(d, -dt, k->w);
-    double A = prox_v3_norm2(rd), B = prox_v3_dot(ro, rd), C = prox_v3_norm2(ro) - k->r * k->r;
-    if (A > 0.0) {
-        double disc = B * B - A * C;
-        if (disc < 0.0) return 0;
-        double sq = sqrt(disc), qq = -(B + (B >= 0.0 ? sq : -sq)), r1 = qq / A, r2 = qq != 0.0 ? C / qq : r1;
-        lo = fmax(lo, fmin(r1, r2));
-        hi = fmin(hi, fmax(r1, r2));
-    } else if (C > 0.0) {
+    double A = prox_v3_norm2(rd);
+    if (A > 0.0) { /* around the closest approach to k's axis (no B^2 - AC cancellation) */
+        double sstar = -prox_v3_dot(ro, rd) / A, dmin = prox_v3_norm(prox_v3_mad(ro, sstar, rd));
+        if (dmin > k->r) return 0;
+        double half = sqrt((k->r - dmin) * (k->r + dmin) / A);
+        lo = fmax(lo, sstar - half);
+        hi = fmin(hi, sstar + half);
+    } else if (prox_v3_norm(ro) > k->r) {
         return 0;
     }
     if (!(lo <= hi)) return 0;
