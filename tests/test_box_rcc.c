@@ -314,6 +314,35 @@ static void test_needle_beside_plate(void **st)
     assert_true(d.distance > 2e-8);
 }
 
+/* Regression (session 2): touching pairs 1e6 from the origin were reported 0.011 and 0.148 apart: the
+ * rim-against-face candidate was dropped when the rounding of coordinates ~1e6 (~1e-10) made its
+ * height slightly negative, and the next candidate won. Both touch within that rounding: the support
+ * function method near the origin finds |sd| < 4e-11. */
+static void test_touching_far_from_origin(void **st)
+{
+    (void)st;
+    const prox_box b[2] = {{{916109.97620175302, 286505.14515563642, -280459.11164191371},
+                            {{-0.00037916083950382537, 0.0010441987651200932, 0.0012748385620487666},
+                             {0.4753843038440112, -0.071029680297156964, 0.19956739916679028},
+                             {0.13088291250199938, 0.29846756554945997, -0.20554272218834807}}},
+                           {{-714013.22546030825, 537662.77404415852, -448446.04499862326},
+                            {{-1.5733135714300404, -2.5795296766053895, 0.38166247329897629},
+                             {0.015718964930393205, -0.0063498747364509559, 0.021881036551048349},
+                             {-5.0662479012430763, 3.7913028812992087, 4.7397421612343491}}}};
+    const prox_rcc c[2] = {{{916110.10641015461, 286505.27253558364, -280459.14107491384},
+                            {0.023765397860766944, 0.017662451216641398, 0.0077974071680049955},
+                            0.027585978914366639},
+                           {{-714015.87258419069, 537663.99321619328, -448444.54791480157},
+                            {-0.16456615419745924, -0.29981278433318009, 0.21842068945176263},
+                            0.48489523963801806}};
+    for (int i = 0; i < 2; ++i) {
+        prox_distance_result d = prox_box_rcc_distance(&b[i], &c[i]);
+        assert_int_equal(d.status, PROX_OK);
+        assert_true(d.distance <= 1e-9); /* the coordinates' rounding is ~1e-10 */
+        assert_true(d.certificate_gap <= d.distance + 1e-9);
+    }
+}
+
 int main(void)
 {
     test_init();
@@ -322,6 +351,7 @@ int main(void)
                                        cmocka_unit_test(test_edge_to_side),
                                        cmocka_unit_test(test_edge_paths),
                                        cmocka_unit_test(test_random_pruned_exact),
-                                       cmocka_unit_test(test_needle_beside_plate)};
+                                       cmocka_unit_test(test_needle_beside_plate),
+                                       cmocka_unit_test(test_touching_far_from_origin)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -16,6 +16,8 @@
  * planes), each end disk with its rim by P(D, L) (Sec. 3.2-3.3, prox_disk_segment), edges pruned by a
  * capsule lower bound. Rim against face: the circle's lowest point along the face normal. */
 #include "distance/box_internal.h"
+
+#include <float.h>
 #include "prox/primitives.h"
 #include "prox/support.h"
 
@@ -348,7 +350,12 @@ static double rim_face(const prox_cframe *c, int top, const prox_bframe *B, int 
     for (int j = 0; j < 3; ++j)
         if (j != k && fabs(l[j]) > B->h[j]) return INFINITY;
     double height = sgn * l[k] - B->h[k];
-    if (!(height > 0.0)) return INFINITY;
+    /* A point on the face up to the rounding of coordinates far from the origin (l is a difference of
+     * coordinates ~|x|): a touching contact, distance 0, not a missing candidate (which left pairs
+     * 1e6 from the origin 0.01-0.15 apart that touch). */
+    double round_tol = 64.0 * DBL_EPSILON * (prox_v3_maxabs(*x) + prox_v3_maxabs(B->m) + B->h[k]);
+    if (!(height > -round_tol)) return INFINITY;
+    if (height < 0.0) height = 0.0;
     l[k] = sgn * B->h[k];
     *y = prox_bframe_point(B, l);
     return height;
@@ -410,9 +417,16 @@ PROX_API prox_distance_result prox_box_rcc_distance(const prox_box *a, const pro
         }
     }
     edges_cyl(&B, &c, D, &best, &r.p1, &r.p2);
-    r.distance = best;
-    n = prox_v3_normalize(prox_v3_sub(r.p2, r.p1));
-    r.certificate_gap = -prox_rcc_support(b, prox_v3_neg(n)) - prox_bframe_support(&B, n);
+    r.distance = best > 0.0 ? best : 0.0; /* a vertex within rounding inside: touching */
+    /* Both directions give lower bounds (weak duality); the pair's own direction is the sharp one
+     * unless the points coincide (touching within rounding), where n0's is used. */
+    double gap0 = -prox_rcc_support(b, prox_v3_neg(n0)) - prox_bframe_support(&B, n0);
+    r.certificate_gap = gap0;
+    if (r.distance > 0.0) {
+        n = prox_v3_divs(prox_v3_sub(r.p2, r.p1), prox_v3_dist(r.p2, r.p1));
+        double g = -prox_rcc_support(b, prox_v3_neg(n)) - prox_bframe_support(&B, n);
+        if (g > gap0) r.certificate_gap = g;
+    }
     return r;
 }
 
