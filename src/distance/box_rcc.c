@@ -16,46 +16,17 @@
  * planes), each end disk with its rim by P(D, L) (Sec. 3.2-3.3, prox_disk_segment), edges pruned by a
  * capsule lower bound. Rim against face: the circle's lowest point along the face normal. */
 #include "distance/box_internal.h"
+#include "distance/stationary.h"
 
 #include <float.h>
 #include "prox/primitives.h"
 #include "prox/support.h"
 
-/* Clips p + s (q - p), s in [0,1], to the solid cylinder enlarged by tol. */
+/* Clips p + s (q - p), s in [0,1], to the solid cylinder enlarged by tol (a prox_clip_fn). */
 static int clip_segment_cyl(const void *cyl, prox_vec3 p, prox_vec3 q, double tol, double *s0, double *s1)
 {
     const prox_cframe *c = cyl;
-    prox_vec3 d = prox_v3_sub(q, p), o = prox_v3_sub(p, c->base);
-    double t0 = prox_v3_dot(o, c->w), dt = prox_v3_dot(d, c->w), lo = 0.0, hi = 1.0;
-    if (dt != 0.0) { /* slab 0 <= t <= h */
-        double a = (-tol - t0) / dt, b = (c->h + tol - t0) / dt;
-        if (a > b) { double x = a; a = b; b = x; }
-        lo = a > lo ? a : lo;
-        hi = b < hi ? b : hi;
-    } else if (t0 < -tol || t0 > c->h + tol) return 0;
-    if (lo > hi) return 0;
-    prox_vec3 ro = prox_v3_mad(o, -t0, c->w), rd = prox_v3_mad(d, -dt, c->w);
-    double A = prox_v3_dot(rd, rd), R = c->r + tol;
-    if (!(A > 0.0)) {
-        double rho = prox_v3_norm(ro);
-        if (rho > R) return 0;
-    } else {
-        /* Around the closest approach s* to the axis: |radial(s)|^2 = dmin^2 + A (s - s*)^2, with
-         * dmin taken from the radial vector at s* itself. The textbook discriminant B^2 - A C
-         * cancels for a long segment passing a thin cylinder (1e-5 relative at 800 x 0.003, an error
-         * of 1e-8 along the segment: a false contact at a 2e-8 gap in test_box_rcc). */
-        double sstar = -prox_v3_dot(ro, rd) / A;
-        prox_vec3 m = prox_v3_mad(ro, sstar, rd);
-        double dmin = prox_v3_norm(m);
-        if (dmin > R) return 0;
-        double half = sqrt((R - dmin) * (R + dmin) / A);
-        lo = sstar - half > lo ? sstar - half : lo;
-        hi = sstar + half < hi ? sstar + half : hi;
-    }
-    if (lo > hi) return 0;
-    *s0 = lo;
-    *s1 = hi;
-    return 1;
+    return prox_segment_clip_solid_cyl(p, q, c->base, c->w, c->h, c->r, tol, s0, s1);
 }
 
 /* Point of the rim circle (top = 0 base, 1 top) at angle th. */

@@ -505,33 +505,14 @@ static prox_vec3 cyl_project(const cyl *k, prox_vec3 x, double delta)
     return prox_v3_add(prox_v3_mad(k->b, tc, k->w), radial);
 }
 
-/* The part of the axis segment of `seg` inside the solid cylinder k (slab of k's height, then the
- * quadratic of k's radius): 1 and its midpoint in *x when not empty.  A point of it is in both. */
+/* The part of the axis segment of `seg` inside the solid cylinder k: 1 and its midpoint in *x when not
+ * empty.  A point of it is in both. */
 static int axis_inside(const cyl *seg, const cyl *k, prox_vec3 *x)
 {
-    prox_vec3 o = prox_v3_sub(seg->b, k->b), d = prox_v3_scale(seg->w, seg->h);
-    double t0 = prox_v3_dot(o, k->w), dt = prox_v3_dot(d, k->w), lo = 0.0, hi = 1.0;
-    if (dt != 0.0) {
-        double u = -t0 / dt, v = (k->h - t0) / dt;
-        lo = fmax(lo, fmin(u, v));
-        hi = fmin(hi, fmax(u, v));
-    } else if (t0 < 0.0 || t0 > k->h) {
-        return 0;
-    }
-    if (!(lo <= hi)) return 0;
-    prox_vec3 ro = prox_v3_mad(o, -t0, k->w), rd = prox_v3_mad(d, -dt, k->w);
-    double A = prox_v3_norm2(rd);
-    if (A > 0.0) { /* around the closest approach to k's axis (no B^2 - AC cancellation) */
-        double sstar = -prox_v3_dot(ro, rd) / A, dmin = prox_v3_norm(prox_v3_mad(ro, sstar, rd));
-        if (dmin > k->r) return 0;
-        double half = sqrt((k->r - dmin) * (k->r + dmin) / A);
-        lo = fmax(lo, sstar - half);
-        hi = fmin(hi, sstar + half);
-    } else if (prox_v3_norm(ro) > k->r) {
-        return 0;
-    }
-    if (!(lo <= hi)) return 0;
-    *x = prox_v3_mad(seg->b, 0.5 * (lo + hi), d);
+    prox_vec3 top = prox_v3_mad(seg->b, seg->h, seg->w);
+    double s0, s1;
+    if (!prox_segment_clip_solid_cyl(seg->b, top, k->b, k->w, k->h, k->r, 0.0, &s0, &s1)) return 0;
+    *x = prox_v3_mad(seg->b, 0.5 * (s0 + s1) * seg->h, seg->w);
     return 1;
 }
 

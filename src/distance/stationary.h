@@ -59,6 +59,13 @@ int prox_circle_line_stationary(const prox_fcircle *c, prox_vec3 p, prox_vec3 w,
  * whose answer is then certified. */
 prox_unit2 prox_circle_line_local(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, prox_unit2 a0);
 
+/* The parameter interval [*s0, *s1] within [0, 1] of the segment p + s (q - p) that lies in the solid
+ * cylinder (base, unit axis w, height h, radius r) enlarged by tol; 0 when they do not meet. The
+ * radial part is measured around the closest approach to the axis, not by the discriminant
+ * B^2 - AC, which cancels for a long segment passing a thin cylinder. */
+int prox_segment_clip_solid_cyl(prox_vec3 p, prox_vec3 q, prox_vec3 base, prox_vec3 w, double h, double r, double tol,
+                                double *s0, double *s1);
+
 /* The largest distance from the circle c to the infinite line through p with unit direction w
  * (the global maximum of the same function, without the quartic: the farthest point of the ellipse
  * c projects onto, one bracketed monotone root). */
