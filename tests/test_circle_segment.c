@@ -266,7 +266,7 @@ static void test_circle_line_max_dist(void **st)
         prox_vec3 off = prox_v3_scale(test_unit(&g), k == 5 ? tilt : test_range(&g, 0.0, 3.0));
         prox_vec3 c = prox_v3_add(p, prox_v3_add(off, prox_v3_scale(w, test_range(&g, -2.5, 2.5))));
         prox_fcircle C = prox_fcircle_make(c, n, r);
-        double got = prox_circle_line_max_dist(&C, p, w);
+        double got = prox_circle_line_max_dist(C.c, C.n, C.r, p, w);
         long double ref = max_dist_ref(&C, p, w);
         double S = fmax(r, prox_v3_dist(c, p));
         worst = fmax(worst, fabs(got - (double)ref) / S);

@@ -276,13 +276,13 @@ static double ellipse_farthest(double a, double b, double q0, double q1)
  * w and to the rim's normal n) and r |n.w| (along w x u), centred at the rim centre's offset E from
  * the axis; the answer is the ellipse's farthest point from the axis (ellipse_farthest). Within
  * 1e-8 rad of n || w the ellipse is a circle to 5e-17 r: |E| + r. */
-double prox_circle_line_max_dist(const prox_fcircle *C, prox_vec3 base, prox_vec3 w)
+double prox_circle_line_max_dist(prox_vec3 centre, prox_vec3 n, double r, prox_vec3 base, prox_vec3 w)
 {
-    prox_vec3 E = prox_v3_reject(prox_v3_sub(C->c, base), w);
-    prox_vec3 x = prox_v3_reject(prox_v3_cross(w, C->n), w);
-    double sn = prox_v3_norm(x), r = C->r;
+    prox_vec3 E = prox_v3_reject(prox_v3_sub(centre, base), w);
+    prox_vec3 x = prox_v3_reject(prox_v3_cross(w, n), w);
+    double sn = prox_v3_norm(x);
     if (!(sn > 1e-8)) return prox_v3_norm(E) + r;
     prox_vec3 u = prox_v3_scale(x, 1.0 / sn), e = prox_v3_cross(w, u);
-    double b = r * fabs(prox_v3_dot(C->n, w));
+    double b = r * fabs(prox_v3_dot(n, w));
     return ellipse_farthest(r, fmin(b, r), fabs(prox_v3_dot(E, u)), fabs(prox_v3_dot(E, e)));
 }

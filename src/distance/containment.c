@@ -149,8 +149,7 @@ PROX_API prox_contain_result prox_rcc_in_rcc(const prox_rcc *a, const prox_rcc *
         prox_vec3 ctr = prox_cframe_rim_center(&A, top);
         double tc = prox_v3_dot(prox_v3_sub(ctr, B.base), B.w);
         c = fmin(c, fmin(tc - s, B.h - tc - s));
-        prox_fcircle C = prox_fcircle_make(ctr, A.w, A.r);
-        c = fmin(c, B.r - prox_circle_line_max_dist(&C, B.base, B.w));
+        c = fmin(c, B.r - prox_circle_line_max_dist(ctr, A.w, A.r, B.base, B.w));
     }
     return finish(c, prox_shape_from_rcc(*a), prox_shape_from_rcc(*b));
 }

@@ -67,7 +67,6 @@ typedef struct query {
     double lower;     /* max of gap(n) over the normals evaluated so far (a lower bound) */
     int best_gap_done; /* the best candidate's own directions are already in `lower` */
     double gap;       /* the best separation seen along the best candidate's normal */
-    int rims;         /* the rims of A and B are prepared (cyl_rims) */
 } query;
 
 /* Prepares c (already validated; h = |axis|) without its rims (cyl_rims). */
@@ -98,15 +97,6 @@ static void cyl_rims(cyl *k)
     k->rim[0] = f;
     k->rim[1] = f; /* same frame, other centre */
     k->rim[1].c = k->cap[1];
-}
-
-/* Prepares the rims of both cylinders once. */
-static void need_rims(query *q)
-{
-    if (q->rims) return;
-    cyl_rims(&q->A);
-    cyl_rims(&q->B);
-    q->rims = 1;
 }
 
 /* Validation of an RCC that also returns its height.  The fast test accepts exactly what
@@ -453,9 +443,10 @@ static double rim_lat_lower_bound(const prox_fcircle *C, const cyl *lc)
 
 /* ---- containment (Agarwal Fig. 2), exact ---- */
 
-/* The cheap tests of circle_in_cyl for the circle (centre c, unit normal n, radius r): 1 inside, 0
- * not inside, -1 undecided (the farthest point from the axis is needed). */
-static int circle_in_cyl_quick(prox_vec3 c, prox_vec3 n, double r, const cyl *k, double tol)
+/* 1 when the circle (centre c, unit normal n, radius r) lies in the closed solid cylinder k (within
+ * tol): its axial range within [0, h] and its farthest point from k's axis within r.  The cheap
+ * tests first; the farthest point (prox_circle_line_max_dist) only when they do not decide. */
+static int circle_in_cyl(prox_vec3 c, prox_vec3 n, double r, const cyl *k, double tol)
 {
     prox_vec3 dc = prox_v3_sub(c, k->b);
     double tc = prox_v3_dot(dc, k->w);
@@ -468,25 +459,18 @@ static int circle_in_cyl_quick(prox_vec3 c, prox_vec3 n, double r, const cyl *k,
     if (rho_c + r <= k->r + tol) return 1;
     if (fmax(rho_c, r) > k->r + tol) return 0;
     /* Support function along the radial direction m of the centre (perpendicular to k's axis): the
-     * circle reaches rho_c + r |m x n| from the axis there; beyond r it is not inside.  Decides most
-     * protruding circles before the quartic. */
+     * circle reaches rho_c + r |m x n| from the axis there; beyond r it is not inside. */
     if (rho_c > 0.0 && rho_c + r * prox_v3_norm(prox_v3_cross(prox_v3_scale(radial, 1.0 / rho_c), n)) > k->r + tol)
         return 0;
-    return -1;
+    return prox_circle_line_max_dist(c, n, r, k->b, k->w) <= k->r + tol;
 }
 
-/* 1 when circle C lies in the closed solid cylinder k (within tol): its axial range within [0, h]
- * and its farthest point from k's axis (prox_circle_line_max_dist) within r. */
-static int circle_in_cyl(const prox_fcircle *C, const cyl *k, double tol)
-{
-    int quick = circle_in_cyl_quick(C->c, C->n, C->r, k, tol);
-    if (quick >= 0) return quick;
-    return prox_circle_line_max_dist(C, k->b, k->w) <= k->r + tol; /* the farthest rim point */
-}
-
+/* A lies in B iff both rims of A do (B convex, A the hull of its rims); a nested cylinder contains
+ * its centre, the cheapest rejection.  Needs no rim frames. */
 static int cyl_in_cyl(const cyl *in, const cyl *out, double tol)
 {
-    return circle_in_cyl(&in->rim[0], out, tol) && circle_in_cyl(&in->rim[1], out, tol);
+    return cyl_contains(out, in->c, tol) && circle_in_cyl(in->cap[0], in->w, in->r, out, tol) &&
+           circle_in_cyl(in->cap[1], in->w, in->r, out, tol);
 }
 
 /* ---- overlap search ---- */
@@ -810,10 +794,8 @@ static void fill_overlap(const query *q, prox_rcc_result *res, prox_vec3 origin)
 /* Decides containment and, for nested pairs, reports the inner centre as the common point. */
 static void containment(query *q, prox_rcc_result *res)
 {
-    need_rims(q);
-    double tol = 0.0;
-    if (cyl_contains(&q->B, q->A.c, tol)) res->a_in_b = cyl_in_cyl(&q->A, &q->B, tol);
-    if (cyl_contains(&q->A, q->B.c, tol)) res->b_in_a = cyl_in_cyl(&q->B, &q->A, tol);
+    res->a_in_b = cyl_in_cyl(&q->A, &q->B, 0.0);
+    res->b_in_a = cyl_in_cyl(&q->B, &q->A, 0.0);
     if (res->a_in_b) q->common = q->A.c;
     else if (res->b_in_a) q->common = q->B.c;
 }
@@ -860,7 +842,8 @@ static prox_status search(query *q, const prox_rcc *a, const prox_rcc *b, prox_a
     /* Cheap overlap witnesses: either centre inside the other solid. */
     if (cyl_contains(&q->B, q->A.c, 0.0)) note_common(q, q->A.c);
     else if (cyl_contains(&q->A, q->B.c, 0.0)) note_common(q, q->B.c);
-    need_rims(q);
+    cyl_rims(&q->A); /* past Case 1 the rims are needed */
+    cyl_rims(&q->B);
     if (!settle(q) && !q->parallel && predict(q, s, t, ea, eb)) return PROX_OK;
     if (!settle(q) && cs != PROX_CASE_1) hierarchy_groups(q, ea, eb, cs);
     if (!settle(q)) closed_form_groups(q, ea, eb, cs, 1); /* fast path: local Newton */
@@ -910,27 +893,11 @@ static void fill_disjoint(const query *q, prox_rcc_result *res, prox_vec3 origin
     res->point_set = is_point_set(q);
 }
 
-/* Containment of in in out (Agarwal Fig. 2, as containment() decides it) without the rims' frames:
- * the cheap tests, and the farthest rim point from the axis only when they do not decide. */
-static int cyl_in_cyl_lean(const cyl *in, const cyl *out)
-{
-    if (!cyl_contains(out, in->c, 0.0)) return 0; /* a nested cylinder contains its centre */
-    for (int e = 0; e < 2; ++e) {
-        int q = circle_in_cyl_quick(in->cap[e], in->w, in->r, out, 0.0);
-        if (q < 0) { /* prox_circle_line_max_dist reads the centre, normal and radius only */
-            prox_fcircle C = {.c = in->cap[e], .n = in->w, .r = in->r};
-            q = prox_circle_line_max_dist(&C, out->b, out->w) <= out->r;
-        }
-        if (!q) return 0;
-    }
-    return 1;
-}
-
 /* Case 1 decided from the prepared cylinders alone, before the query state, the rims and the
  * candidate machinery exist (Agarwal Sec. 2: both feet of the common perpendicular on the finite
  * axes).  Disjoint: the S-S pair along the unit common normal is the minimum (the infinite solid
  * cylinders are L - rA - rB apart, docs/errata.md 8).  Overlapping: the point between the axes is a
- * common point, and containment is decided by cyl_in_cyl_lean.  Returns 0, leaving the general path
+ * common point, and containment is decided by cyl_in_cyl.  Returns 0, leaving the general path
  * to answer, when the axes are within 1e-3 rad of parallel (ill-conditioned feet) or not in Case 1. */
 static int case1_fast(const cyl *A, const cyl *B, double scale, prox_vec3 origin, prox_rcc_result *res)
 {
@@ -958,7 +925,7 @@ static int case1_fast(const cyl *A, const cyl *B, double scale, prox_vec3 origin
     prox_vec3 x = between_axes(f1, v, L, A->r, B->r);
     double eps = 64.0 * DBL_EPSILON * scale;
     if (!cyl_contains(A, x, eps) || !cyl_contains(B, x, eps)) return 0;
-    int ab = cyl_in_cyl_lean(A, B), ba = ab ? 0 : cyl_in_cyl_lean(B, A);
+    int ab = cyl_in_cyl(A, B, 0.0), ba = ab ? 0 : cyl_in_cyl(B, A, 0.0);
     res->a_in_b = ab;
     res->b_in_a = ba;
     res->distance = 0.0;
@@ -987,7 +954,7 @@ PROX_API prox_rcc_result prox_rcc_distance(const prox_rcc *a, const prox_rcc *b)
     for (int i = 0; i < 4; ++i) sc = dims[i] > sc ? dims[i] : sc;
     if (case1_fast(&q.A, &q.B, sc, origin, &res)) return res;
 
-    q.have_best = q.overlap = q.tag = q.best_gap_done = q.rims = 0;
+    q.have_best = q.overlap = q.tag = q.best_gap_done = 0;
     q.scale = sc;
     q.eps = 64.0 * DBL_EPSILON * q.scale;
     q.lower = q.gap = -INFINITY;

@@ -66,10 +66,11 @@ prox_unit2 prox_circle_line_local(const prox_fcircle *c, prox_vec3 p, prox_vec3 
 int prox_segment_clip_solid_cyl(prox_vec3 p, prox_vec3 q, prox_vec3 base, prox_vec3 w, double h, double r, double tol,
                                 double *s0, double *s1);
 
-/* The largest distance from the circle c to the infinite line through p with unit direction w
+/* The largest distance from the circle (centre, unit normal, radius; no frame needed) to the infinite
+ * line through p with unit direction w
  * (the global maximum of the same function, without the quartic: the farthest point of the ellipse
  * c projects onto, one bracketed monotone root). */
-double prox_circle_line_max_dist(const prox_fcircle *c, prox_vec3 p, prox_vec3 w);
+double prox_circle_line_max_dist(prox_vec3 centre, prox_vec3 unit_normal, double radius, prox_vec3 p, prox_vec3 w);
 
 /* Every stationary angle theta_a on circle a of g(theta_a) = dist^2(point_a(theta_a), circle b)
  * (Agarwal Sec. 3.5, degree 8 in tan(theta_a/2), rooted by prox_poly_real_roots; the angle pi is
