@@ -1,4 +1,5 @@
 /* Shape validators (called at every public entry point) and generic-shape constructors. */
+#include "core/validate.h"
 #include "prox/shapes.h"
 
 static int finite3(prox_vec3 v) { return prox_v3_isfinite(v); }
@@ -7,16 +8,28 @@ static int coord_ok(double x) { return fabs(x) <= PROX_MAX_COORD; }
 static int coord3_ok(prox_vec3 v) { return coord_ok(v.x) && coord_ok(v.y) && coord_ok(v.z); }
 static int size_ok(double s) { return s >= PROX_MIN_SIZE && s <= PROX_MAX_COORD; }
 
-PROX_API prox_status prox_rcc_validate(const prox_rcc *c)
+prox_status prox_rcc_validate_h(const prox_rcc *c, double *h)
 {
+    *h = 0.0;
     if (!c) return PROX_EINVAL_ARG;
+    /* One branch-free pass accepts a valid cylinder (the range test also fails NaN and infinities);
+     * only a rejected one goes through the ordered checks below for the status naming its fault. */
+    double hh = prox_v3_norm(c->axis);
+    if (coord3_ok(c->base) & coord3_ok(c->axis) & size_ok(c->radius) & size_ok(hh)) {
+        *h = hh;
+        return PROX_OK;
+    }
     if (!finite3(c->base) || !finite3(c->axis) || !isfinite(c->radius)) return PROX_EINVAL_NONFINITE;
     if (!(c->radius > 0.0)) return PROX_EINVAL_RADIUS;
     if (!coord3_ok(c->base) || !coord3_ok(c->axis)) return PROX_EINVAL_RANGE;
-    double h = prox_v3_norm(c->axis);
-    if (!(h > 0.0)) return PROX_EINVAL_AXIS;
-    if (!size_ok(h) || !size_ok(c->radius)) return PROX_EINVAL_RANGE;
-    return PROX_OK;
+    if (!(hh > 0.0)) return PROX_EINVAL_AXIS;
+    return PROX_EINVAL_RANGE; /* size_ok failed for the height or the radius */
+}
+
+PROX_API prox_status prox_rcc_validate(const prox_rcc *c)
+{
+    double h;
+    return prox_rcc_validate_h(c, &h);
 }
 
 PROX_API prox_status prox_box_validate(const prox_box *b)

@@ -33,6 +33,7 @@
 #include <float.h>
 #include <stddef.h>
 
+#include "core/validate.h"
 #include "distance/stationary.h"
 #include "prox/distance.h"
 #include "prox/sat.h"
@@ -97,26 +98,6 @@ static void cyl_rims(cyl *k)
     k->rim[0] = f;
     k->rim[1] = f; /* same frame, other centre */
     k->rim[1].c = k->cap[1];
-}
-
-/* Validation of an RCC that also returns its height.  The fast test accepts exactly what
- * prox_rcc_validate accepts (every coordinate within the supported range, which NaN and infinities
- * fail; radius and height within [PROX_MIN_SIZE, PROX_MAX_COORD]); a rejected cylinder goes through
- * the validator for the status naming the fault. */
-static prox_status rcc_check(const prox_rcc *c, double *h)
-{
-    *h = 0.0;
-    if (!c) return PROX_EINVAL_ARG;
-    const double M = PROX_MAX_COORD;
-    int ok = (fabs(c->base.x) <= M) & (fabs(c->base.y) <= M) & (fabs(c->base.z) <= M) & (fabs(c->axis.x) <= M) &
-             (fabs(c->axis.y) <= M) & (fabs(c->axis.z) <= M) & (c->radius >= PROX_MIN_SIZE) & (c->radius <= M);
-    double hh = ok ? prox_v3_norm(c->axis) : 0.0;
-    if (ok && hh >= PROX_MIN_SIZE && hh <= M) {
-        *h = hh;
-        return PROX_OK;
-    }
-    prox_status st = prox_rcc_validate(c);
-    return st != PROX_OK ? st : PROX_EINVAL_RANGE; /* unreachable: the two tests agree */
 }
 
 /* Support function of a prepared cylinder (see rcc_support.c; same formula, prepared data). */
@@ -940,8 +921,8 @@ PROX_API prox_rcc_result prox_rcc_distance(const prox_rcc *a, const prox_rcc *b)
 {
     prox_rcc_result res = {0};
     double ha, hb;
-    if ((res.status = rcc_check(a, &ha)) != PROX_OK) return res;
-    if ((res.status = rcc_check(b, &hb)) != PROX_OK) return res;
+    if ((res.status = prox_rcc_validate_h(a, &ha)) != PROX_OK) return res;
+    if ((res.status = prox_rcc_validate_h(b, &hb)) != PROX_OK) return res;
 
     /* Step 1: both cylinders prepared relative to A's centre.  Only the flags are cleared: the
      * cylinders are filled by cyl_init, the candidate is read only once have_best is set. */
