@@ -63,6 +63,8 @@ typedef struct query {
     int have_best;
     int overlap;
     prox_vec3 common; /* a point of A and B when overlap */
+    prox_vec3 nab;    /* wA x wB, computed once */
+    double nn;        /* |wA x wB|^2 */
     int parallel;     /* axes parallel to working precision */
     int tag;          /* the groups being generated are the hierarchy's picks */
     double lower;     /* max of gap(n) over the normals evaluated so far (a lower bound) */
@@ -564,8 +566,7 @@ static prox_agarwal_case classify(query *q, int *ea, int *eb, double *s_out, dou
     double s = 0.5 * q->A.h, t = 0.5 * q->B.h;
     prox_agarwal_case cs = PROX_CASE_NONE;
     if (!q->parallel) {
-        prox_vec3 n = prox_v3_cross(q->A.w, q->B.w);
-        axis_feet(&q->A, &q->B, n, prox_v3_norm2(n), &s, &t);
+        axis_feet(&q->A, &q->B, q->nab, q->nn, &s, &t);
         int on1 = s >= 0.0 && s <= q->A.h, on2 = t >= 0.0 && t <= q->B.h;
         cs = on1 && on2 ? PROX_CASE_1 : (on1 || on2 ? PROX_CASE_2_1 : PROX_CASE_3);
         q->tag = 1;
@@ -752,7 +753,7 @@ static int predict(query *q, double s, double t, int ha, int hb)
  * cross product) separates the solids: then no overlap search is needed. */
 static int separated_cheaply(const query *q)
 {
-    prox_vec3 dirs[4] = {prox_v3_sub(q->B.c, q->A.c), q->A.w, q->B.w, prox_v3_cross(q->A.w, q->B.w)};
+    prox_vec3 dirs[4] = {prox_v3_sub(q->B.c, q->A.c), q->A.w, q->B.w, q->nab};
     for (int i = 0; i < 4; ++i) {
         double l = prox_v3_norm(dirs[i]);
         if (!(l > 0.0)) continue;
@@ -786,7 +787,7 @@ static void containment(query *q, prox_rcc_result *res)
 static int is_point_set(const query *q)
 {
     const cand *b = &q->best;
-    double sn = prox_v3_norm(prox_v3_cross(q->A.w, q->B.w));
+    double sn = sqrt(q->nn);
     if (b->kind == PROX_PAIR_CD && sn <= 1e-12) {
         const cyl *rc = b->f1 == PROX_FEAT_RIM_BASE || b->f1 == PROX_FEAT_RIM_TOP ? &q->A : &q->B;
         const cyl *dc = rc == &q->A ? &q->B : &q->A;
@@ -809,8 +810,7 @@ static int is_point_set(const query *q)
 static prox_status search(query *q, const prox_rcc *a, const prox_rcc *b, prox_agarwal_case cs, int ea, int eb,
                           double s, double t)
 {
-    if (cs == PROX_CASE_1 && q->have_best && !q->overlap &&
-        prox_v3_norm2(prox_v3_cross(q->A.w, q->B.w)) >= 1e-6) {
+    if (cs == PROX_CASE_1 && q->have_best && !q->overlap && q->nn >= 1e-6) {
         /* Case 1 (both feet of the common perpendicular on the finite axes) with the axes farther
          * apart than rA + rB: the infinite solid cylinders are at distance L - rA - rB, the finite
          * ones contain the S-S pair at that distance, so S-S is the minimum (Agarwal Sec. 2); the
@@ -880,10 +880,10 @@ static void fill_disjoint(const query *q, prox_rcc_result *res, prox_vec3 origin
  * cylinders are L - rA - rB apart, docs/errata.md 8).  Overlapping: the point between the axes is a
  * common point, and containment is decided by cyl_in_cyl.  Returns 0, leaving the general path
  * to answer, when the axes are within 1e-3 rad of parallel (ill-conditioned feet) or not in Case 1. */
-static int case1_fast(const cyl *A, const cyl *B, double scale, prox_vec3 origin, prox_rcc_result *res)
+static int case1_fast(const cyl *A, const cyl *B, prox_vec3 n, double nn, double scale, prox_vec3 origin,
+                      prox_rcc_result *res)
 {
-    prox_vec3 n = prox_v3_cross(A->w, B->w);
-    double nn = prox_v3_norm2(n), s, t;
+    double s, t; /* n = wA x wB, nn = |n|^2 */
     if (!(nn >= 1e-6)) return 0;
     axis_feet(A, B, n, nn, &s, &t);
     if (!(s >= 0.0 && s <= A->h && t >= 0.0 && t <= B->h)) return 0;
@@ -933,13 +933,15 @@ PROX_API prox_rcc_result prox_rcc_distance(const prox_rcc *a, const prox_rcc *b)
     double sc = prox_v3_norm(prox_v3_sub(q.B.c, q.A.c));
     double dims[4] = {q.A.h, q.B.h, q.A.r, q.B.r};
     for (int i = 0; i < 4; ++i) sc = dims[i] > sc ? dims[i] : sc;
-    if (case1_fast(&q.A, &q.B, sc, origin, &res)) return res;
+    q.nab = prox_v3_cross(q.A.w, q.B.w);
+    q.nn = prox_v3_norm2(q.nab);
+    if (case1_fast(&q.A, &q.B, q.nab, q.nn, sc, origin, &res)) return res;
 
     q.have_best = q.overlap = q.tag = q.best_gap_done = 0;
     q.scale = sc;
     q.eps = 64.0 * DBL_EPSILON * q.scale;
     q.lower = q.gap = -INFINITY;
-    q.parallel = prox_v3_norm2(prox_v3_cross(q.A.w, q.B.w)) <= 1e-30;
+    q.parallel = q.nn <= 1e-30;
 
     int ea, eb;
     double s, t;
