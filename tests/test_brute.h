@@ -86,6 +86,29 @@ static inline ld tb_min_periodic(tb_fn f, const void *ctx, int n)
     return best;
 }
 
+/* A circle (centre c, orthonormal u, v in its plane, radius r) against a line (point p, unit w). */
+typedef struct tb_circle_line {
+    lv3 c, u, v, p, w;
+    ld r;
+} tb_circle_line;
+
+/* Minus the distance of the circle point at angle t from the line (for tb_min_periodic). */
+static inline ld tb_neg_dist_from_line(const void *ctx, ld t)
+{
+    const tb_circle_line *k = ctx;
+    lv3 x = lsub(ladd(k->c, ladd(lsc(k->u, k->r * cosl(t)), lsc(k->v, k->r * sinl(t)))), k->p);
+    return -lnorm(lsub(x, lsc(k->w, ldot(x, k->w))));
+}
+
+/* Largest distance of the circle (centre c, unit normal n, radius r) from the line (p, unit w): 1024
+ * samples, every local maximum refined by golden section. */
+static inline ld tb_circle_line_max_dist(prox_vec3 c, prox_vec3 n, double r, prox_vec3 p, prox_vec3 w)
+{
+    prox_vec3 u = prox_v3_any_perp(n);
+    tb_circle_line k = {L(c), L(u), L(prox_v3_cross(n, u)), L(p), L(w), r};
+    return -tb_min_periodic(tb_neg_dist_from_line, &k, TB_MAX_SAMPLES);
+}
+
 /* Minimum of f on [0, 1]: n + 1 samples at i / n, refined by golden section over the neighbouring
  * intervals of the best sample (every_local_min = 0: enough for a convex f) or of every sampled
  * local minimum (every_local_min = 1); the smallest sample or refined value. */

@@ -223,31 +223,9 @@ static void test_circle_segment_special(void **st)
 }
 
 /* Largest distance of a circle from a line (prox_circle_line_max_dist, the ellipse's farthest point)
- * against 4096 samples refined by golden sections in long double, over random, parallel (circle plane
+ * against tb_circle_line_max_dist (samples refined by golden sections in long double), over random, parallel (circle plane
  * normal to the line), nearly parallel, edge-on, nearly edge-on and centre-near-the-line
  * configurations, to 1e-12 of max(r, centre distance). */
-static long double max_dist_ref(const prox_fcircle *C, prox_vec3 p, prox_vec3 w)
-{
-    enum { N = 4096 };
-    long double best = 0.0L;
-    double bt = 0.0;
-#define DIST_AT(th) prox_v3_norm(prox_v3_reject(prox_v3_sub(prox_fcircle_point(C, (th)), p), w))
-    for (int i = 0; i < N; ++i) {
-        double th = 2.0 * PROX_PI * i / N, v = DIST_AT(th);
-        if (v > best) best = v, bt = th;
-    }
-    double lo = bt - 2.0 * PROX_PI / N, hi = bt + 2.0 * PROX_PI / N, g = 0.6180339887498949;
-    for (int it = 0; it < 100; ++it) {
-        double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), f1 = DIST_AT(x1), f2 = DIST_AT(x2);
-        if (f1 > f2) hi = x2;
-        else lo = x1;
-        if (f1 > best) best = f1;
-        if (f2 > best) best = f2;
-    }
-#undef DIST_AT
-    return best;
-}
-
 static void test_circle_line_max_dist(void **st)
 {
     (void)st;
@@ -267,7 +245,7 @@ static void test_circle_line_max_dist(void **st)
         prox_vec3 c = prox_v3_add(p, prox_v3_add(off, prox_v3_scale(w, test_range(&g, -2.5, 2.5))));
         prox_fcircle C = prox_fcircle_make(c, n, r);
         double got = prox_circle_line_max_dist(C.c, C.n, C.r, p, w);
-        long double ref = max_dist_ref(&C, p, w);
+        ld ref = tb_circle_line_max_dist(c, n, r, p, w);
         double S = fmax(r, prox_v3_dist(c, p));
         worst = fmax(worst, fabs(got - (double)ref) / S);
         assert_near(got, (double)ref, 1e-12 * S);

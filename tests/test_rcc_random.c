@@ -3,7 +3,7 @@
  * all its families, the certified separating-axis verdict (src/sat) on Agarwal's protocol, and the
  * containment flags against a brute-force maximisation.
  * Rare failures (1 in 1e4 pairs) were found only at this size: keep it large. */
-#include "test_util.h"
+#include "test_brute.h"
 #include "prox/sat.h"
 #include "prox/support.h"
 #include "../bench/stress_gen.h"
@@ -56,34 +56,15 @@ static void test_rcc_random_verdict(void **state)
 }
 
 /* Brute-force containment of circle (c, n, r) in the solid cylinder k: the axial range is exact
- * (t_c +- r |n x w|); the largest distance from k's axis is maximised over 4096 angles and refined by
- * golden section.  *margin is how far the decision is from flipping (min over both tests). */
+ * (t_c +- r |n x w|); the largest distance from k's axis by tb_circle_line_max_dist (samples refined
+ * by golden sections, test_brute.h).  *margin is how far the decision is from flipping (min over both tests). */
 static int circle_inside_brute(prox_vec3 c, prox_vec3 n, double r, const prox_rcc *k, double *margin)
 {
     double h = prox_v3_norm(k->axis);
     prox_vec3 w = prox_v3_scale(k->axis, 1.0 / h);
-    prox_vec3 u = prox_v3_any_perp(n), v = prox_v3_cross(n, u);
     double tc = prox_v3_dot(prox_v3_sub(c, k->base), w), half = r * prox_v3_norm(prox_v3_cross(n, w));
     double ax = fmin(tc - half, h - (tc + half)); /* >= 0 inside */
-#define RHO(th)                                                                                                  \
-    (prox_v3_norm(prox_v3_reject(                                                                                \
-        prox_v3_sub(prox_v3_add(c, prox_v3_add(prox_v3_scale(u, r * cos(th)), prox_v3_scale(v, r * sin(th)))),   \
-                    k->base),                                                                                    \
-        w)))
-    const int N = 4096;
-    double best = -1.0, bth = 0.0;
-    for (int i = 0; i < N; ++i) {
-        double th = 2.0 * PROX_PI * i / N, rho = RHO(th);
-        if (rho > best) best = rho, bth = th;
-    }
-    double lo = bth - 2.0 * PROX_PI / N, hi = bth + 2.0 * PROX_PI / N, g = 0.5 * (sqrt(5.0) - 1.0);
-    for (int it = 0; it < 80; ++it) {
-        double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
-        if (RHO(m1) > RHO(m2)) hi = m2;
-        else lo = m1;
-    }
-    double rmax = fmax(best, RHO(0.5 * (lo + hi)));
-#undef RHO
+    double rmax = (double)tb_circle_line_max_dist(c, n, r, k->base, w);
     double rad = k->radius - rmax;
     *margin = fmin(fabs(ax), fabs(rad));
     return ax >= 0.0 && rad >= 0.0;
