@@ -744,7 +744,6 @@ static int predict(query *q, double s, double t, int ha, int hb)
         if (!q->have_best || (tried >> code & 1)) return 0;
         tried |= 1 << code;
         n = q->best.n, pa = q->best.p1, pb = q->best.p2;
-        if ((tried >> 0 & 1) + (tried >> 1 & 1) + (tried >> 2 & 1) + (tried >> 3 & 1) == 4) return 0;
     }
     return 0;
 }
