@@ -122,6 +122,50 @@ static void test_rcc_random_containment(void **state)
     assert_int_equal(bad, 0);
 }
 
+/* Nesting flags of overlapping Case-1 pairs (the feet of the common perpendicular on both axes, which
+ * prox decides before any preparation, with bounds on the farthest point of each rim) against the
+ * brute force.  The small cylinder's foot is put less than rb from the big one's along the common
+ * normal, so its rims straddle the big cylinder's side as often as they sit inside; the radii and
+ * tilts span the band where the bounds leave the decision to the exact test.  Both argument orders. */
+static void test_rcc_case1_nesting(void **state)
+{
+    (void)state;
+    sg_rng r = sg_seed(2211);
+    const int n = 20000;
+    int bad = 0, inside = 0, decided = 0, case1 = 0;
+    for (int i = 0; i < n; ++i) {
+        double rb = sg_log(&r, 0.1, 10.0), hb = sg_log(&r, 0.1, 10.0);
+        prox_vec3 w = sg_unit(&r), wa = sg_u(&r) < 0.2 ? sg_tilt(&r, w, sg_log(&r, 2e-3, 0.2)) : sg_unit(&r);
+        double ra = rb * sg_log(&r, 0.02, 1.2), ha = hb * sg_log(&r, 0.02, 1.2);
+        double t = hb * sg_u(&r), s = ha * sg_u(&r), L = rb * sg_u(&r);
+        prox_vec3 nrm = prox_v3_normalize(prox_v3_cross(wa, w));
+        prox_rcc big = {prox_v3_scale(sg_unit(&r), 10.0 * sg_u(&r)), prox_v3_scale(w, hb), rb};
+        prox_vec3 foot = prox_v3_mad(prox_v3_mad(big.base, t, w), L, nrm);
+        prox_rcc small = {prox_v3_mad(foot, -s, wa), prox_v3_scale(wa, ha), ra};
+        double S = prox_rcc_pair_scale(&small, &big), m_ab, m_ba;
+        int ab = rcc_inside_brute(&small, &big, &m_ab), ba = rcc_inside_brute(&big, &small, &m_ba);
+        prox_rcc_result d1 = prox_rcc_distance(&small, &big), d2 = prox_rcc_distance(&big, &small);
+        assert_int_equal(d1.status, PROX_OK);
+        assert_true(d1.interfere && d2.interfere && d1.distance == 0.0 && d2.distance == 0.0);
+        case1 += d1.agarwal == PROX_CASE_1;
+        if (m_ab > 1e-9 * S) {
+            ++decided;
+            inside += ab;
+            if ((d1.a_in_b != ab || d2.b_in_a != ab) && bad++ < 5)
+                print_error("pair %d: A in B brute %d, prox %d / %d (margin %.3g S)\n", i, ab, d1.a_in_b, d2.b_in_a,
+                            m_ab / S);
+        }
+        if (m_ba > 1e-9 * S && (d1.b_in_a != ba || d2.a_in_b != ba) && bad++ < 5)
+            print_error("pair %d: B in A brute %d, prox %d / %d\n", i, ba, d1.b_in_a, d2.a_in_b);
+    }
+    printf("# %d overlapping Case-1 constructions (%d classified Case 1), %d decided by the brute force (%d inside), "
+           "mismatches %d\n",
+           n, case1, decided, inside, bad);
+    assert_true(case1 > n * 9 / 10);
+    assert_true(inside > decided / 10 && inside < decided - decided / 10); /* both outcomes exercised */
+    assert_int_equal(bad, 0);
+}
+
 /* Extreme aspect ratios (radii and heights log-uniform over 1e-3 .. 1e3, the base of B up to 1e3
  * times A's size away): the verdict agrees with the certified SAT, disjoint distances with the
  * independent support-function method, and overlap witnesses lie in both solids. Session 1 reported
@@ -170,6 +214,7 @@ int main(void)
         cmocka_unit_test(test_rcc_random_constructed),
         cmocka_unit_test(test_rcc_random_verdict),
         cmocka_unit_test(test_rcc_random_containment),
+        cmocka_unit_test(test_rcc_case1_nesting),
         cmocka_unit_test(test_rcc_random_extreme_aspect),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -5,31 +5,38 @@
 static int finite3(prox_vec3 v) { return prox_v3_isfinite(v); }
 /* Inside the supported range (shapes.h). */
 static int coord_ok(double x) { return fabs(x) <= PROX_MAX_COORD; }
-static int coord3_ok(prox_vec3 v) { return coord_ok(v.x) && coord_ok(v.y) && coord_ok(v.z); }
-static int size_ok(double s) { return s >= PROX_MIN_SIZE && s <= PROX_MAX_COORD; }
+static int coord3_ok(prox_vec3 v) { return coord_ok(v.x) & coord_ok(v.y) & coord_ok(v.z); }
+static int size_ok(double s) { return (s >= PROX_MIN_SIZE) & (s <= PROX_MAX_COORD); }
 
-prox_status prox_rcc_validate_h(const prox_rcc *c, double *h)
+prox_status prox_rcc_validate_h2(const prox_rcc *c, double *h2)
 {
-    *h = 0.0;
+    *h2 = 0.0;
     if (!c) return PROX_EINVAL_ARG;
-    /* One branch-free pass accepts a valid cylinder (the range test also fails NaN and infinities);
-     * only a rejected one goes through the ordered checks below for the status naming its fault. */
-    double hh = prox_v3_norm(c->axis);
-    if (coord3_ok(c->base) & coord3_ok(c->axis) & size_ok(c->radius) & size_ok(hh)) {
-        *h = hh;
+    /* One branch-free pass accepts a valid cylinder with no square root: the range test also fails
+     * NaN and infinities, and the squared height is tested strictly inside the size range (by 1e-7
+     * relative, so that rounding of the squares cannot accept a height just outside it).  Anything
+     * else goes through the ordered checks below, which name the fault or accept a cylinder at the
+     * very ends of the range exactly as |axis| would. */
+    double hh2 = prox_v3_norm2(c->axis);
+    const double lo = (1.0 + 1e-7) * PROX_MIN_SIZE * PROX_MIN_SIZE, hi = (1.0 - 1e-7) * PROX_MAX_COORD * PROX_MAX_COORD;
+    if (coord3_ok(c->base) & coord3_ok(c->axis) & size_ok(c->radius) & (hh2 > lo) & (hh2 < hi)) {
+        *h2 = hh2;
         return PROX_OK;
     }
     if (!finite3(c->base) || !finite3(c->axis) || !isfinite(c->radius)) return PROX_EINVAL_NONFINITE;
     if (!(c->radius > 0.0)) return PROX_EINVAL_RADIUS;
     if (!coord3_ok(c->base) || !coord3_ok(c->axis)) return PROX_EINVAL_RANGE;
+    double hh = prox_v3_norm(c->axis);
     if (!(hh > 0.0)) return PROX_EINVAL_AXIS;
-    return PROX_EINVAL_RANGE; /* size_ok failed for the height or the radius */
+    if (!size_ok(c->radius) || !size_ok(hh)) return PROX_EINVAL_RANGE;
+    *h2 = hh * hh; /* inside the range at its very ends */
+    return PROX_OK;
 }
 
 PROX_API prox_status prox_rcc_validate(const prox_rcc *c)
 {
-    double h;
-    return prox_rcc_validate_h(c, &h);
+    double h2;
+    return prox_rcc_validate_h2(c, &h2);
 }
 
 PROX_API prox_status prox_box_validate(const prox_box *b)

@@ -4,12 +4,14 @@
  * right-circular cylinders in space", J. Mech. Robot. 8 (2016), Sec. 2 (Figs. 3-5) and Sec. 3.
  *
  * How a query flows (docs/design.md has the long version):
- *  1. Both cylinders are validated and prepared (rims only when needed) in a frame centred on A's
- *     centre, so that pairs far from the origin keep their relative precision.
+ *  1. Both cylinders are validated (no root).  Case 1 with well-conditioned feet is decided at once
+ *     from the raw input (case1_raw, Agarwal's first level for that case): the infinite solid
+ *     cylinders are L - rA - rB apart and contain the finite ones, so the S-S pair is the minimum;
+ *     overlapping Case-1 pairs get their common point and root-free nesting bounds there too.
+ *     Every other pair is prepared (rims only when needed) in a frame centred on A's centre, so that
+ *     pairs far from the origin keep their relative precision.
  *  2. Agarwal's first level: P(S1,S2) from the common perpendicular of the axes gives the case
- *     (1, 2.1/2.2, 3).  Case 1 with well-conditioned feet is decided at once (case1_fast): the
- *     infinite solid cylinders are L - rA - rB apart and contain the finite ones, so the S-S pair is
- *     the minimum; overlapping Case-1 pairs get their common point and containment there too.
+ *     (1, 2.1/2.2, 3).
  *  3. Candidates.  For two DISJOINT convex solids the closest pair (p1, p2) lies on a pair of features
  *     (lateral surface S, end-disk interior D, rim circle C) where the distance is stationary, so it is
  *     one of: S-S on the common perpendicular, C-S (stationary points of circle-to-axis distance),
@@ -37,6 +39,12 @@
 #include "distance/stationary.h"
 #include "prox/distance.h"
 #include "prox/sat.h"
+
+#if defined(__GNUC__) || defined(__clang__)
+#define RCC_NOINLINE __attribute__((noinline))
+#else
+#define RCC_NOINLINE
+#endif
 
 /* A cylinder prepared for the query (coordinates relative to the query origin). */
 typedef struct cyl {
@@ -873,68 +881,142 @@ static void fill_disjoint(const query *q, prox_rcc_result *res, prox_vec3 origin
     res->point_set = is_point_set(q);
 }
 
-/* Case 1 decided from the prepared cylinders alone, before the query state, the rims and the
- * candidate machinery exist (Agarwal Sec. 2: both feet of the common perpendicular on the finite
- * axes).  Disjoint: the S-S pair along the unit common normal is the minimum (the infinite solid
- * cylinders are L - rA - rB apart, docs/errata.md 8).  Overlapping: the point between the axes is a
- * common point, and containment is decided by cyl_in_cyl.  Returns 0, leaving the general path
- * to answer, when the axes are within 1e-3 rad of parallel (ill-conditioned feet) or not in Case 1. */
-static int case1_fast(const cyl *A, const cyl *B, prox_vec3 n, double nn, double scale, prox_vec3 origin,
-                      prox_rcc_result *res)
+/* Where the rim centres of one cylinder (`in`) lie with respect to the other's (`out`) axis o: axial
+ * coordinates from out's base times |o|, and squared distances from the axis. */
+typedef struct rim_pos {
+    double t[2], rho2[2];
+} rim_pos;
+
+/* The exact test of nested_raw for a rim between its bounds: circle_in_cyl on both rims, with out
+ * prepared in a frame at its base (c0: in's base centre there).  Out of line: rarely needed, and its
+ * prepared cylinder would weigh on the Case 1 path's frame. */
+static RCC_NOINLINE int nested_exact(const prox_rcc *in, const prox_rcc *out, prox_vec3 c0)
 {
-    double s, t; /* n = wA x wB, nn = |n|^2 */
-    if (!(nn >= 1e-6)) return 0;
-    axis_feet(A, B, n, nn, &s, &t);
-    if (!(s >= 0.0 && s <= A->h && t >= 0.0 && t <= B->h)) return 0;
-    double ln = sqrt(nn), sd = prox_v3_dot(prox_v3_sub(B->b, A->b), n) / ln, L = fabs(sd);
-    prox_vec3 v = prox_v3_scale(n, (sd < 0.0 ? -1.0 : 1.0) / ln), f1 = prox_v3_mad(A->b, s, A->w);
-    res->agarwal = PROX_CASE_1;
-    if (L > A->r + B->r) {
-        res->distance = L - A->r - B->r;
-        res->p1 = prox_v3_add(prox_v3_mad(f1, A->r, v), origin);
-        /* each point from its own foot: on its surface to rounding even where the feet carry
-         * their ~eps S / |wA x wB| error along the axes (|p2 - p1| then differs from the distance
-         * only to second order in it) */
-        res->p2 = prox_v3_add(prox_v3_mad(prox_v3_mad(B->b, t, B->w), -B->r, v), origin);
-        res->pair = PROX_PAIR_SS;
-        res->feature1 = res->feature2 = PROX_FEAT_LATERAL;
-        res->certificate_gap = res->distance;
-        res->hierarchy_exact = 1;
+    cyl oc;
+    cyl_init(&oc, out, prox_v3_norm(out->axis), out->base);
+    prox_vec3 wi = prox_v3_scale(in->axis, 1.0 / prox_v3_norm(in->axis));
+    return circle_in_cyl(c0, wi, in->radius, &oc, 0.0) &&
+           circle_in_cyl(prox_v3_add(c0, in->axis), wi, in->radius, &oc, 0.0);
+}
+
+/* Nesting of `in` in `out` (Agarwal Fig. 2), exact: `in` lies in `out` iff both rims do (out convex).
+ * A rim (radius r) fits axially iff its centre is r sin(theta) from each end (theta the angle of the
+ * axes).  Radially, its projection on out's cross-section is an ellipse of semi-axes r (along the
+ * common normal e of the axes) and r |cos(theta)|, centred rho from the axis, and its farthest
+ * distance D from the axis satisfies
+ *     rho^2 + 2 r |ue| + r^2  <=  D^2  <=  rho^2 + 2 r sqrt(ue^2 + cos^2(theta) (rho^2 - ue^2)) + r^2,
+ * ue the centre's offset from the axis along e, which is the distance L of the axes for both rims
+ * and both cylinders (the lower bound is the ellipse's end on its major axis).  The rim is out when
+ * the lower bound exceeds ro^2, in when the upper one does not; only in between (rare) does
+ * circle_in_cyl find D.  No root and no division: half2 = (r sin(theta) |o|)^2, L2 = L^2.
+ * p: the rim centres (rim_pos); c0: the base centre of `in` relative to out's base (for the exact
+ * test only). */
+static int nested_raw(const prox_rcc *in, const prox_rcc *out, const rim_pos *p, double half2, double L2,
+                      double cos2, prox_vec3 c0)
+{
+    double ri2 = in->radius * in->radius, ro = out->radius, oo = prox_v3_norm2(out->axis);
+    double lo = p->t[0] < p->t[1] ? p->t[0] : p->t[1], rest = oo - (p->t[0] < p->t[1] ? p->t[1] : p->t[0]);
+    int yes = (lo >= 0.0) & (rest >= 0.0) & (lo * lo >= half2) & (rest * rest >= half2), no = !yes;
+    for (int k = 0; k < 2; ++k) {
+        double g = ro * ro - p->rho2[k] - ri2, g2 = g * g;
+        yes &= (g >= 0.0) & (4.0 * ri2 * (L2 + cos2 * (p->rho2[k] - L2)) <= g2);
+        no |= (g < 0.0) | (4.0 * ri2 * L2 > g2);
+    }
+    return yes | no ? yes : nested_exact(in, out, c0);
+}
+
+/* What case1_raw hands to case1_overlap: d = bB - bA, n = a x b, d x a, d x b, A's foot f1, the unit
+ * common normal v, |a|^2, |b|^2, |n|^2 and the distance L of the axes. */
+typedef struct case1_geom {
+    prox_vec3 d, n, dxa, dxb, f1, v;
+    double aa, bb, nn, L;
+} case1_geom;
+
+/* Overlapping Case 1: the point between the axes is in both by construction; nesting by nested_raw,
+ * from the cross products of the feet (A's rim centres relative to B's base are -d and a - d, B's
+ * relative to A's are d and d + b).  Out of line, so that the disjoint path stays lean. */
+static RCC_NOINLINE void case1_overlap(const prox_rcc *A, const prox_rcc *B, const case1_geom *g, prox_rcc_result *res)
+{
+    prox_vec3 a = A->axis, b = B->axis, d = g->d, n = g->n;
+    double aa = g->aa, bb = g->bb, nn = g->nn, L = g->L, ra = A->radius, rb = B->radius;
+    double iab = 1.0 / (aa * bb), ab = prox_v3_dot(a, b), da = prox_v3_dot(d, a), db = prox_v3_dot(d, b);
+    double cos2 = ab * ab * iab, L2 = L * L;
+    rim_pos pa = {{-db, ab - db}, {prox_v3_norm2(g->dxb) * aa * iab, prox_v3_norm2(prox_v3_sub(n, g->dxb)) * aa * iab}};
+    rim_pos pb = {{da, da + ab}, {prox_v3_norm2(g->dxa) * bb * iab, prox_v3_norm2(prox_v3_sub(g->dxa, n)) * bb * iab}};
+    int ain = nested_raw(A, B, &pa, ra * ra * nn * bb * iab, L2, cos2, prox_v3_neg(d));
+    int bin = ain ? 0 : nested_raw(B, A, &pb, rb * rb * nn * aa * iab, L2, cos2, d);
+    prox_vec3 x = ain ? prox_v3_mad(A->base, 0.5, a) : bin ? prox_v3_mad(B->base, 0.5, b) : between_axes(g->f1, g->v, L, ra, rb);
+    *res = (prox_rcc_result){.status = PROX_OK,
+                             .distance = 0.0,
+                             .p1 = x,
+                             .p2 = x,
+                             .pair = PROX_PAIR_OVERLAP,
+                             .feature1 = PROX_FEAT_INSIDE,
+                             .feature2 = PROX_FEAT_INSIDE,
+                             .agarwal = PROX_CASE_1,
+                             .interfere = 1,
+                             .a_in_b = ain,
+                             .b_in_a = bin};
+}
+
+/* Case 1 decided from the raw input before anything is prepared (Agarwal Sec. 2: both feet of the
+ * common perpendicular on the finite axes).  With the unnormalised axes a, b and d = bB - bA:
+ * n = a x b, the feet at the fractions s = ((d x b).n)/|n|^2 and t = ((d x a).n)/|n|^2 of the axes,
+ * and the axes L = |d.n|/|n| apart.  Disjoint: the S-S pair along the unit common normal is the
+ * minimum (the infinite solid cylinders are L - rA - rB apart and contain the finite ones,
+ * docs/errata.md 8).  Overlapping: case1_overlap.
+ * Returns 1 when answered, 0 for the general path: axes within 1e-3 rad of parallel (ill-conditioned
+ * feet), not Case 1, or squared lengths outside [1e-60, 1e60] (so that the products of four lengths
+ * below neither overflow nor lose precision to underflow).  One square root and one division for a
+ * disjoint pair, one more division for an overlapping one. */
+static int case1_raw(const prox_rcc *A, const prox_rcc *B, double aa, double bb, prox_rcc_result *res)
+{
+    prox_vec3 a = A->axis, b = B->axis, d = prox_v3_sub(B->base, A->base);
+    if (!(aa >= 1e-60 && aa <= 1e60 && bb >= 1e-60 && bb <= 1e60 && prox_v3_norm2(d) <= 1e60)) return 0;
+    prox_vec3 n = prox_v3_cross(a, b), dxb = prox_v3_cross(d, b), dxa = prox_v3_cross(d, a);
+    double nn = prox_v3_norm2(n);
+    if (!(nn >= 1e-6 * aa * bb)) return 0;
+    double sn = prox_v3_dot(dxb, n), tn = prox_v3_dot(dxa, n);
+    if (!(sn >= 0.0 && sn <= nn && tn >= 0.0 && tn <= nn)) return 0;
+    double inv = 1.0 / sqrt(nn), sd = prox_v3_dot(d, n) * inv, L = fabs(sd);
+    double s = sn * inv * inv, t = tn * inv * inv, ra = A->radius, rb = B->radius;
+    prox_vec3 v = prox_v3_scale(n, sd < 0.0 ? -inv : inv), f1 = prox_v3_mad(A->base, s, a);
+    if (L > ra + rb) {
+        /* each point from its own foot: on its surface to rounding */
+        *res = (prox_rcc_result){.status = PROX_OK,
+                                 .distance = L - ra - rb,
+                                 .p1 = prox_v3_mad(f1, ra, v),
+                                 .p2 = prox_v3_mad(prox_v3_mad(B->base, t, b), -rb, v),
+                                 .pair = PROX_PAIR_SS,
+                                 .feature1 = PROX_FEAT_LATERAL,
+                                 .feature2 = PROX_FEAT_LATERAL,
+                                 .agarwal = PROX_CASE_1,
+                                 .hierarchy_exact = 1,
+                                 .certificate_gap = L - ra - rb};
         return 1;
     }
-    prox_vec3 x = between_axes(f1, v, L, A->r, B->r);
-    double eps = 64.0 * DBL_EPSILON * scale;
-    if (!cyl_contains(A, x, eps) || !cyl_contains(B, x, eps)) return 0;
-    int ab = cyl_in_cyl(A, B, 0.0), ba = ab ? 0 : cyl_in_cyl(B, A, 0.0);
-    res->a_in_b = ab;
-    res->b_in_a = ba;
-    res->distance = 0.0;
-    res->p1 = res->p2 = prox_v3_add(ab ? A->c : (ba ? B->c : x), origin);
-    res->pair = PROX_PAIR_OVERLAP;
-    res->feature1 = res->feature2 = PROX_FEAT_INSIDE;
-    res->interfere = 1;
+    case1_geom g = {d, n, dxa, dxb, f1, v, aa, bb, nn, L};
+    case1_overlap(A, B, &g, res);
     return 1;
 }
 
-PROX_API prox_rcc_result prox_rcc_distance(const prox_rcc *a, const prox_rcc *b)
+/* Steps 1-6 for every pair that case1_raw does not answer (validated; squared heights ha2, hb2).
+ * Kept out of line: its large query state would otherwise burden the Case 1 path's frame. */
+static RCC_NOINLINE prox_rcc_result rcc_general(const prox_rcc *a, const prox_rcc *b, double ha2, double hb2)
 {
     prox_rcc_result res = {0};
-    double ha, hb;
-    if ((res.status = prox_rcc_validate_h(a, &ha)) != PROX_OK) return res;
-    if ((res.status = prox_rcc_validate_h(b, &hb)) != PROX_OK) return res;
 
     /* Step 1: both cylinders prepared relative to A's centre.  Only the flags are cleared: the
      * cylinders are filled by cyl_init, the candidate is read only once have_best is set. */
     prox_vec3 origin = prox_v3_mad(a->base, 0.5, a->axis);
     query q;
-    cyl_init(&q.A, a, ha, origin);
-    cyl_init(&q.B, b, hb, origin);
+    cyl_init(&q.A, a, sqrt(ha2), origin);
+    cyl_init(&q.B, b, sqrt(hb2), origin);
     double sc = prox_v3_norm(prox_v3_sub(q.B.c, q.A.c));
     double dims[4] = {q.A.h, q.B.h, q.A.r, q.B.r};
     for (int i = 0; i < 4; ++i) sc = dims[i] > sc ? dims[i] : sc;
     q.nab = prox_v3_cross(q.A.w, q.B.w);
     q.nn = prox_v3_norm2(q.nab);
-    if (case1_fast(&q.A, &q.B, q.nab, q.nn, sc, origin, &res)) return res;
 
     q.have_best = q.overlap = q.tag = q.best_gap_done = 0;
     q.scale = sc;
@@ -952,5 +1034,16 @@ PROX_API prox_rcc_result prox_rcc_distance(const prox_rcc *a, const prox_rcc *b)
     } else {
         fill_disjoint(&q, &res, origin);
     }
+    return res;
+}
+
+PROX_API prox_rcc_result prox_rcc_distance(const prox_rcc *a, const prox_rcc *b)
+{
+    prox_rcc_result res; /* the one returned object on every path: filled in place */
+    double ha2, hb2;
+    prox_status st = prox_rcc_validate_h2(a, &ha2);
+    if (st == PROX_OK) st = prox_rcc_validate_h2(b, &hb2);
+    if (st != PROX_OK) res = (prox_rcc_result){.status = st};
+    else if (!case1_raw(a, b, ha2, hb2, &res)) res = rcc_general(a, b, ha2, hb2);
     return res;
 }
