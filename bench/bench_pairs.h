@@ -69,5 +69,7 @@ extern const bench_method bench_prox_distance_method;
 
 /* The capsule approximation (segment-segment distance minus the radii), the floor of issue 3. */
 extern const bench_method bench_capsule_method;
+/* A method without geometry: the cost of the benchmark's harness per query (bench_capsule.c). */
+extern const bench_method bench_harness_method;
 
 #endif

@@ -99,6 +99,7 @@ void bench_group_rcc(const bench_opts *o)
     methods[nm++] = &bench_capsule_method;
     for (const bench_method *const *m = bench_prox_methods; *m; ++m) methods[nm++] = *m;
     for (int k = 0; k < nm; ++k) add_near_far(o, methods[k], P, nf);
+    add_near_far(o, &bench_harness_method, P, nf); /* no reference sets: it computes nothing */
 #ifdef PROX_BENCH_HAVE_RCC
     add_distance_classes(o, P, is_near);
 #endif

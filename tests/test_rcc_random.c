@@ -131,7 +131,7 @@ static void test_rcc_case1_nesting(void **state)
 {
     (void)state;
     sg_rng r = sg_seed(2211);
-    const int n = 20000;
+    const int n = 5000;
     int bad = 0, inside = 0, decided = 0, case1 = 0;
     for (int i = 0; i < n; ++i) {
         double rb = sg_log(&r, 0.1, 10.0), hb = sg_log(&r, 0.1, 10.0);

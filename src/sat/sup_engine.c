@@ -405,6 +405,112 @@ static void search_samples(sup_search *s)
                 if (i || j || k) consider(s, prox_v3(i, j, k));
 }
 
+/* ---- GJK: a separating direction where sampling finds none ------------------------------------ */
+
+/* The foot of the origin on the affine hull of a vertex (m = 1), an edge (2) or a triangle (3), computed
+ * so that its direction is accurate: perpendicular to the edge to rounding (a second rejection), or
+ * along the triangle's normal, a cross product free of cancellation.  For a long feature passing
+ * close to the origin the barycentric combination carries an error of eps |feature| in every
+ * direction, and phi, which is kinked across the feature, would lose |feature| times its angle. */
+static prox_vec3 face_foot(const prox_vec3 *p, int m)
+{
+    if (m == 1) return p[0];
+    prox_vec3 e = prox_v3_sub(p[1], p[0]);
+    if (m == 2) {
+        double ee = prox_v3_norm2(e);
+        prox_vec3 v = prox_v3_mad(p[0], -prox_v3_dot(p[0], e) / ee, e);
+        return prox_v3_mad(v, -prox_v3_dot(v, e) / ee, e);
+    }
+    prox_vec3 nrm = prox_v3_cross(e, prox_v3_sub(p[2], p[0]));
+    return prox_v3_scale(nrm, prox_v3_dot(p[0], nrm) / prox_v3_norm2(nrm));
+}
+
+/* Closest point v to the origin of the hull of the n <= 4 points p (Johnson's distance
+ * subalgorithm, by enumeration): the closest point lies in the relative interior of one face of the
+ * simplex, where it is the affine projection of the origin with positive barycentric coordinates,
+ * so it is the nearest such projection over all faces.  That face's vertices replace p.  Returns 1
+ * when the origin is inside the tetrahedron (n = 4, all four coordinates positive). */
+static int simplex_closest(prox_vec3 p[4], int *n, prox_vec3 *v)
+{
+    double best = INFINITY;
+    int best_mask = 1, inside = 0;
+    for (int mask = 1; mask < (1 << *n); ++mask) {
+        prox_vec3 q[4], e[3];
+        int m = 0;
+        for (int i = 0; i < *n; ++i)
+            if (mask >> i & 1) q[m++] = p[i];
+        /* x = q0 + sum mu_i (q_i - q0) with G mu = r, G_ij = e_i.e_j, r_i = -e_i.q0 (Cramer / elimination) */
+        double G[3][4] = {{0}}, mu[3] = {0, 0, 0};
+        for (int i = 1; i < m; ++i) e[i - 1] = prox_v3_sub(q[i], q[0]);
+        for (int i = 0; i < m - 1; ++i) {
+            for (int j = 0; j < m - 1; ++j) G[i][j] = prox_v3_dot(e[i], e[j]);
+            G[i][3] = -prox_v3_dot(e[i], q[0]);
+        }
+        int ok = 1;
+        for (int c = 0; c < m - 1 && ok; ++c) { /* Gaussian elimination, symmetric positive (semi)definite */
+            if (!(G[c][c] > 1e-24 * (G[0][0] + 1e-300))) ok = 0;
+            for (int r = c + 1; r < m - 1 && ok; ++r) {
+                double f = G[r][c] / G[c][c];
+                for (int k = c; k < 4; ++k) G[r][k] -= f * G[c][k];
+            }
+        }
+        if (!ok) continue; /* a degenerate face: its hull is covered by its sub-faces */
+        for (int c = m - 2; c >= 0; --c) {
+            double t = G[c][3];
+            for (int k = c + 1; k < m - 1; ++k) t -= G[c][k] * mu[k];
+            mu[c] = t / G[c][c];
+        }
+        double l0 = 1.0;
+        int pos = 1;
+        for (int i = 0; i < m - 1; ++i) l0 -= mu[i], pos &= mu[i] > 0.0;
+        if (!(pos && l0 > 0.0)) continue;
+        if (m == 4) { inside = 1; best_mask = mask; *v = prox_v3(0, 0, 0); break; }
+        prox_vec3 x = q[0];
+        for (int i = 0; i < m - 1; ++i) x = prox_v3_mad(x, mu[i], e[i]);
+        double xx = prox_v3_norm2(x);
+        if (xx < best) { best = xx; best_mask = mask; *v = x; }
+    }
+    int m = 0;
+    for (int i = 0; i < *n; ++i)
+        if (best_mask >> i & 1) p[m++] = p[i];
+    *n = m;
+    if (!inside) *v = face_foot(p, m);
+    return inside;
+}
+
+/* GJK (Gilbert, Johnson & Keerthi 1988) on P = A_c + B_c - Delta, whose support point in D is
+ * phi_grad(D) and support function phi(D): the origin is in P iff the bodies overlap, and for a
+ * disjoint pair the point v of P nearest the origin gives the minimiser D = -v/|v| of phi.  Returns 1
+ * for a disjoint pair (a separating direction, phi < 0, recorded), iterating on until the upper
+ * bound |v| and the lower bound -phi(D) meet within a few ulps of the scale (exact for polytopes in
+ * finitely many steps; for curved bodies the Newton searches refine).  Returns 0 when the origin was
+ * enclosed, came within rounding of P, or progress stalled (overlapping or touching pairs).  Every
+ * direction tried is recorded.  It finds the narrow cone of separating directions of a near-touching
+ * disjoint pair that the fixed samples miss, and the vertex contacts of boxes, where phi is linear in
+ * each cell and the sphere Newton crawls. */
+static int gjk_separate(sup_search *s)
+{
+    prox_vec3 p[4] = {prox_v3_neg(s->delta)}, v = p[0]; /* the point of P at both centres */
+    int n = 1, separated = 0;
+    double tol = 4.0 * DBL_EPSILON * s->scale, floor2 = 256.0 * tol * tol;
+    for (int it = 0; it < 128; ++it) {
+        double vv = prox_v3_norm2(v);
+        if (!(vv > floor2)) return separated;
+        prox_vec3 d = prox_v3_scale(v, -1.0 / sqrt(vv));
+        double f = phi_eval(s, d);
+        record(s, d, f);
+        separated |= f < 0.0;
+        if (separated && sqrt(vv) + f <= tol) return 1; /* |v| = -phi(d) to rounding: converged */
+        prox_vec3 w = phi_grad(s, d);
+        for (int i = 0; i < n; ++i)
+            if (prox_v3_norm2(prox_v3_sub(w, p[i])) <= floor2) return separated; /* no new point */
+        p[n++] = w;
+        if (simplex_closest(p, &n, &v)) return 0;
+        if (!(prox_v3_norm2(v) < vv)) return separated; /* no progress (rounding) */
+    }
+    return separated;
+}
+
 /* ---- witness points ------------------------------------------------------------------------ */
 
 /* A support set: point (dim 0), segment (dim 1: c +- s0 e0), disk (c, normal n, radius rad) or
@@ -562,6 +668,7 @@ prox_signed_result sup_signed_distance(const sup_body *a, const sup_body *b, con
     s.best_d = prox_v3(0, 0, 1);
     if (hint) consider(&s, *hint);
     search_points(&s);
+    gjk_separate(&s); /* a separating cone too narrow for the samples; box vertex contacts */
     prox_vec3 r[6];
     int n = sup_ridges(a, r);
     n += sup_ridges(b, r + n);
