@@ -166,6 +166,44 @@ static void test_rcc_case1_nesting(void **state)
     assert_int_equal(bad, 0);
 }
 
+/* Case-1 pairs (nested, overlapping, disjoint) scaled by 2^-120 and 2^120, exact binary scalings that
+ * move every squared length outside the range where prox decides Case 1 from the raw input (the
+ * general path answers them): distance, points and nesting flags must scale exactly with the pair. */
+static void test_rcc_case1_extreme_scale(void **state)
+{
+    (void)state;
+    sg_rng r = sg_seed(977);
+    int bad = 0;
+    const double scales[2] = {0x1p-120, 0x1p120};
+    for (int i = 0; i < 2000; ++i) {
+        double rb = sg_log(&r, 0.1, 10.0), hb = sg_log(&r, 0.1, 10.0);
+        prox_vec3 w = sg_unit(&r), wa = sg_unit(&r);
+        double ra = rb * sg_log(&r, 0.02, 1.2), ha = hb * sg_log(&r, 0.02, 1.2);
+        double t = hb * sg_u(&r), s = ha * sg_u(&r), L = (rb + ra) * 1.5 * sg_u(&r); /* a third disjoint */
+        prox_vec3 nrm = prox_v3_normalize(prox_v3_cross(wa, w));
+        prox_rcc b = {prox_v3_scale(sg_unit(&r), 10.0 * sg_u(&r)), prox_v3_scale(w, hb), rb};
+        prox_vec3 foot = prox_v3_mad(prox_v3_mad(b.base, t, w), L, nrm);
+        prox_rcc a = {prox_v3_mad(foot, -s, wa), prox_v3_scale(wa, ha), ra};
+        prox_rcc_result d = prox_rcc_distance(&a, &b);
+        for (int k = 0; k < 2; ++k) {
+            double f = scales[k];
+            prox_rcc as = {prox_v3_scale(a.base, f), prox_v3_scale(a.axis, f), a.radius * f};
+            prox_rcc bs = {prox_v3_scale(b.base, f), prox_v3_scale(b.axis, f), b.radius * f};
+            prox_rcc_result e = prox_rcc_distance(&as, &bs);
+            double S = prox_rcc_pair_scale(&a, &b);
+            int ok = e.status == PROX_OK && fabs(e.distance / f - d.distance) <= 1e-12 * S &&
+                     e.interfere == d.interfere && e.a_in_b == d.a_in_b && e.b_in_a == d.b_in_a;
+            if (ok && d.distance > 0.0)
+                ok = prox_v3_dist(prox_v3_scale(e.p1, 1.0 / f), d.p1) <= 1e-12 * S &&
+                     prox_v3_dist(prox_v3_scale(e.p2, 1.0 / f), d.p2) <= 1e-12 * S;
+            if (!ok && bad++ < 5)
+                print_error("pair %d scale %g: d %.17g -> %.17g, flags %d%d%d -> %d%d%d\n", i, f, d.distance,
+                            e.distance / f, d.interfere, d.a_in_b, d.b_in_a, e.interfere, e.a_in_b, e.b_in_a);
+        }
+    }
+    assert_int_equal(bad, 0);
+}
+
 /* Extreme aspect ratios (radii and heights log-uniform over 1e-3 .. 1e3, the base of B up to 1e3
  * times A's size away): the verdict agrees with the certified SAT, disjoint distances with the
  * independent support-function method, and overlap witnesses lie in both solids. Session 1 reported
@@ -215,6 +253,7 @@ int main(void)
         cmocka_unit_test(test_rcc_random_verdict),
         cmocka_unit_test(test_rcc_random_containment),
         cmocka_unit_test(test_rcc_case1_nesting),
+        cmocka_unit_test(test_rcc_case1_extreme_scale),
         cmocka_unit_test(test_rcc_random_extreme_aspect),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -966,13 +966,16 @@ static RCC_NOINLINE void case1_overlap(const prox_rcc *A, const prox_rcc *B, con
  * minimum (the infinite solid cylinders are L - rA - rB apart and contain the finite ones,
  * docs/errata.md 8).  Overlapping: case1_overlap.
  * Returns 1 when answered, 0 for the general path: axes within 1e-3 rad of parallel (ill-conditioned
- * feet), not Case 1, or squared lengths outside [1e-60, 1e60] (so that the products of four lengths
- * below neither overflow nor lose precision to underflow).  One square root and one division for a
+ * feet), not Case 1, or squared lengths (axes, radii, base offset) outside [1e-60, 1e60] (so that the
+ * products of four lengths below neither overflow nor lose precision to underflow).  One square root and one division for a
  * disjoint pair, one more division for an overlapping one. */
 static int case1_raw(const prox_rcc *A, const prox_rcc *B, double aa, double bb, prox_rcc_result *res)
 {
     prox_vec3 a = A->axis, b = B->axis, d = prox_v3_sub(B->base, A->base);
-    if (!(aa >= 1e-60 && aa <= 1e60 && bb >= 1e-60 && bb <= 1e60 && prox_v3_norm2(d) <= 1e60)) return 0;
+    double ra2 = A->radius * A->radius, rb2 = B->radius * B->radius;
+    if (!(aa >= 1e-60 && aa <= 1e60 && bb >= 1e-60 && bb <= 1e60 && prox_v3_norm2(d) <= 1e60 && ra2 >= 1e-60 &&
+          ra2 <= 1e60 && rb2 >= 1e-60 && rb2 <= 1e60))
+        return 0;
     prox_vec3 n = prox_v3_cross(a, b), dxb = prox_v3_cross(d, b), dxa = prox_v3_cross(d, a);
     double nn = prox_v3_norm2(n);
     if (!(nn >= 1e-6 * aa * bb)) return 0;
