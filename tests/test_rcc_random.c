@@ -135,7 +135,8 @@ static void test_rcc_case1_nesting(void **state)
     int bad = 0, inside = 0, decided = 0, case1 = 0;
     for (int i = 0; i < n; ++i) {
         double rb = sg_log(&r, 0.1, 10.0), hb = sg_log(&r, 0.1, 10.0);
-        prox_vec3 w = sg_unit(&r), wa = sg_u(&r) < 0.2 ? sg_tilt(&r, w, sg_log(&r, 2e-3, 0.2)) : sg_unit(&r);
+        prox_vec3 w = sg_unit(&r);
+        prox_vec3 wa = sg_u(&r) < 0.2 ? sg_tilt(&r, w, sg_log(&r, 2e-3, 0.2)) : sg_unit(&r);
         double ra = rb * sg_log(&r, 0.02, 1.2), ha = hb * sg_log(&r, 0.02, 1.2);
         double t = hb * sg_u(&r), s = ha * sg_u(&r), L = rb * sg_u(&r);
         prox_vec3 nrm = prox_v3_normalize(prox_v3_cross(wa, w));
@@ -152,14 +153,14 @@ static void test_rcc_case1_nesting(void **state)
             ++decided;
             inside += ab;
             if ((d1.a_in_b != ab || d2.b_in_a != ab) && bad++ < 5)
-                print_error("pair %d: A in B brute %d, prox %d / %d (margin %.3g S)\n", i, ab, d1.a_in_b, d2.b_in_a,
-                            m_ab / S);
+                print_error("pair %d: A in B brute %d, prox %d / %d (margin %.3g S)\n", i, ab,
+                            d1.a_in_b, d2.b_in_a, m_ab / S);
         }
         if (m_ba > 1e-9 * S && (d1.b_in_a != ba || d2.a_in_b != ba) && bad++ < 5)
             print_error("pair %d: B in A brute %d, prox %d / %d\n", i, ba, d1.b_in_a, d2.a_in_b);
     }
-    printf("# %d overlapping Case-1 constructions (%d classified Case 1), %d decided by the brute force (%d inside), "
-           "mismatches %d\n",
+    printf("# %d overlapping Case-1 constructions (%d classified Case 1), %d decided by the brute "
+           "force (%d inside), mismatches %d\n",
            n, case1, decided, inside, bad);
     assert_true(case1 > n * 9 / 10);
     assert_true(inside > decided / 10 && inside < decided - decided / 10); /* both outcomes exercised */
@@ -179,7 +180,8 @@ static void test_rcc_case1_extreme_scale(void **state)
         double rb = sg_log(&r, 0.1, 10.0), hb = sg_log(&r, 0.1, 10.0);
         prox_vec3 w = sg_unit(&r), wa = sg_unit(&r);
         double ra = rb * sg_log(&r, 0.02, 1.2), ha = hb * sg_log(&r, 0.02, 1.2);
-        double t = hb * sg_u(&r), s = ha * sg_u(&r), L = (rb + ra) * 1.5 * sg_u(&r); /* a third disjoint */
+        double t = hb * sg_u(&r), s = ha * sg_u(&r);
+        double L = (rb + ra) * 1.5 * sg_u(&r); /* a third disjoint */
         prox_vec3 nrm = prox_v3_normalize(prox_v3_cross(wa, w));
         prox_rcc b = {prox_v3_scale(sg_unit(&r), 10.0 * sg_u(&r)), prox_v3_scale(w, hb), rb};
         prox_vec3 foot = prox_v3_mad(prox_v3_mad(b.base, t, w), L, nrm);
@@ -197,8 +199,9 @@ static void test_rcc_case1_extreme_scale(void **state)
                 ok = prox_v3_dist(prox_v3_scale(e.p1, 1.0 / f), d.p1) <= 1e-12 * S &&
                      prox_v3_dist(prox_v3_scale(e.p2, 1.0 / f), d.p2) <= 1e-12 * S;
             if (!ok && bad++ < 5)
-                print_error("pair %d scale %g: d %.17g -> %.17g, flags %d%d%d -> %d%d%d\n", i, f, d.distance,
-                            e.distance / f, d.interfere, d.a_in_b, d.b_in_a, e.interfere, e.a_in_b, e.b_in_a);
+                print_error("pair %d scale %g: d %.17g -> %.17g, flags %d%d%d -> %d%d%d\n", i, f,
+                            d.distance, e.distance / f, d.interfere, d.a_in_b, d.b_in_a,
+                            e.interfere, e.a_in_b, e.b_in_a);
         }
     }
     assert_int_equal(bad, 0);

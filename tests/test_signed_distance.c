@@ -299,12 +299,16 @@ static void test_support_generic_shapes(void **state)
 /* A random macrobody of kind k (0 RCC, 1 BOX, 2 SPH), sizes log-uniform over 1e-3 .. 1e3, at c. */
 static prox_shape near_touch_shape(sg_rng *r, int k, prox_vec3 c)
 {
-    if (k == 0) return prox_shape_from_rcc((prox_rcc){c, prox_v3_scale(sg_unit(r), sg_log(r, 1e-3, 1e3)), sg_log(r, 1e-3, 1e3)});
+    if (k == 0) {
+        prox_vec3 axis = prox_v3_scale(sg_unit(r), sg_log(r, 1e-3, 1e3));
+        return prox_shape_from_rcc((prox_rcc){c, axis, sg_log(r, 1e-3, 1e3)});
+    }
     if (k == 1) {
         double q[4];
         sg_random_quat(r, q);
         prox_box b = {.corner = c};
-        for (int i = 0; i < 3; ++i) b.edge[i] = prox_v3_scale(sg_qrot(q, prox_v3(i == 0, i == 1, i == 2)), sg_log(r, 1e-3, 1e3));
+        for (int i = 0; i < 3; ++i)
+            b.edge[i] = prox_v3_scale(sg_qrot(q, prox_v3(i == 0, i == 1, i == 2)), sg_log(r, 1e-3, 1e3));
         return prox_shape_from_box(b);
     }
     return prox_shape_from_sph((prox_sph){c, sg_log(r, 1e-3, 1e3)});
@@ -329,27 +333,30 @@ static void test_support_near_touching(void **state)
             for (int i = 0; i < 12000; ++i) {
                 prox_shape a = near_touch_shape(&r, ka, prox_v3(0, 0, 0));
                 double sz = prox_shape_size(&a);
-                prox_shape b = near_touch_shape(&r, kb, prox_v3_scale(sg_unit(&r), sg_log(&r, 1e-2, 1e1) * sz));
+                prox_vec3 cb = prox_v3_scale(sg_unit(&r), sg_log(&r, 1e-2, 1e1) * sz);
+                prox_shape b = near_touch_shape(&r, kb, cb);
                 prox_distance_result d = prox_shape_distance(&a, &b);
                 if (d.status != PROX_OK || !(d.distance > 0.0)) continue;
                 prox_vec3 nrm = prox_v3_scale(prox_v3_sub(d.p2, d.p1), 1.0 / d.distance);
                 double S0 = prox_shape_pair_scale(&a, &b), g = sg_log(&r, 1e-12, 1e-2) * S0;
                 prox_shape b2;
-                assert_int_equal(prox_shape_translated(&b, prox_v3_scale(nrm, g - d.distance), &b2), PROX_OK);
+                prox_vec3 move = prox_v3_scale(nrm, g - d.distance);
+                assert_int_equal(prox_shape_translated(&b, move, &b2), PROX_OK);
                 prox_distance_result e = prox_shape_distance(&a, &b2);
                 prox_signed_result s = prox_shape_signed_distance_support(&a, &b2);
                 assert_int_equal(s.status, PROX_OK);
                 double S = prox_shape_pair_scale(&a, &b2), err = fabs(s.sd - e.distance) / S;
                 worst = fmax(worst, err);
                 ++cnt;
-                int wrong = s.sd > e.distance + 1e-12 * S || err > 1e-11 || (e.distance > 1e-10 * S && !(s.sd > 0.0));
+                int wrong = s.sd > e.distance + 1e-12 * S || err > 1e-11 ||
+                            (e.distance > 1e-10 * S && !(s.sd > 0.0));
                 if (wrong && bad++ < 5)
-                    print_error("%s-%s pair %d: support %.17g, distance %.17g (scale %.3g)\n", kn[ka], kn[kb], i, s.sd,
-                                e.distance, S);
+                    print_error("%s-%s pair %d: support %.17g, distance %.17g (scale %.3g)\n",
+                                kn[ka], kn[kb], i, s.sd, e.distance, S);
             }
             total += cnt;
-            printf("# %s-%s: %d near-touching pairs, worst |support - distance| %.2g x scale\n", kn[ka], kn[kb], cnt,
-                   worst);
+            printf("# %s-%s: %d near-touching pairs, worst |support - distance| %.2g x scale\n",
+                   kn[ka], kn[kb], cnt, worst);
         }
     assert_true(total > 50000);
     assert_int_equal(bad, 0);

@@ -911,11 +911,12 @@ static RCC_NOINLINE int nested_exact(const prox_rcc *in, const prox_rcc *out, pr
  * circle_in_cyl find D.  No root and no division: half2 = (r sin(theta) |o|)^2, L2 = L^2.
  * p: the rim centres (rim_pos); c0: the base centre of `in` relative to out's base (for the exact
  * test only). */
-static int nested_raw(const prox_rcc *in, const prox_rcc *out, const rim_pos *p, double half2, double L2,
-                      double cos2, prox_vec3 c0)
+static int nested_raw(const prox_rcc *in, const prox_rcc *out, const rim_pos *p, double half2,
+                      double L2, double cos2, prox_vec3 c0)
 {
     double ri2 = in->radius * in->radius, ro = out->radius, oo = prox_v3_norm2(out->axis);
-    double lo = p->t[0] < p->t[1] ? p->t[0] : p->t[1], rest = oo - (p->t[0] < p->t[1] ? p->t[1] : p->t[0]);
+    double lo = p->t[0] < p->t[1] ? p->t[0] : p->t[1];
+    double rest = oo - (p->t[0] < p->t[1] ? p->t[1] : p->t[0]);
     int yes = (lo >= 0.0) & (rest >= 0.0) & (lo * lo >= half2) & (rest * rest >= half2), no = !yes;
     for (int k = 0; k < 2; ++k) {
         double g = ro * ro - p->rho2[k] - ri2, g2 = g * g;
@@ -935,17 +936,23 @@ typedef struct case1_geom {
 /* Overlapping Case 1: the point between the axes is in both by construction; nesting by nested_raw,
  * from the cross products of the feet (A's rim centres relative to B's base are -d and a - d, B's
  * relative to A's are d and d + b).  Out of line, so that the disjoint path stays lean. */
-static RCC_NOINLINE void case1_overlap(const prox_rcc *A, const prox_rcc *B, const case1_geom *g, prox_rcc_result *res)
+static RCC_NOINLINE void case1_overlap(const prox_rcc *A, const prox_rcc *B, const case1_geom *g,
+                                       prox_rcc_result *res)
 {
     prox_vec3 a = A->axis, b = B->axis, d = g->d, n = g->n;
     double aa = g->aa, bb = g->bb, nn = g->nn, L = g->L, ra = A->radius, rb = B->radius;
-    double iab = 1.0 / (aa * bb), ab = prox_v3_dot(a, b), da = prox_v3_dot(d, a), db = prox_v3_dot(d, b);
+    double iab = 1.0 / (aa * bb), ab = prox_v3_dot(a, b);
+    double da = prox_v3_dot(d, a), db = prox_v3_dot(d, b);
     double cos2 = ab * ab * iab, L2 = L * L;
-    rim_pos pa = {{-db, ab - db}, {prox_v3_norm2(g->dxb) * aa * iab, prox_v3_norm2(prox_v3_sub(n, g->dxb)) * aa * iab}};
-    rim_pos pb = {{da, da + ab}, {prox_v3_norm2(g->dxa) * bb * iab, prox_v3_norm2(prox_v3_sub(g->dxa, n)) * bb * iab}};
+    rim_pos pa = {{-db, ab - db},
+                  {prox_v3_norm2(g->dxb) * aa * iab, prox_v3_norm2(prox_v3_sub(n, g->dxb)) * aa * iab}};
+    rim_pos pb = {{da, da + ab},
+                  {prox_v3_norm2(g->dxa) * bb * iab, prox_v3_norm2(prox_v3_sub(g->dxa, n)) * bb * iab}};
     int ain = nested_raw(A, B, &pa, ra * ra * nn * bb * iab, L2, cos2, prox_v3_neg(d));
     int bin = ain ? 0 : nested_raw(B, A, &pb, rb * rb * nn * aa * iab, L2, cos2, d);
-    prox_vec3 x = ain ? prox_v3_mad(A->base, 0.5, a) : bin ? prox_v3_mad(B->base, 0.5, b) : between_axes(g->f1, g->v, L, ra, rb);
+    prox_vec3 x = ain   ? prox_v3_mad(A->base, 0.5, a)
+                  : bin ? prox_v3_mad(B->base, 0.5, b)
+                        : between_axes(g->f1, g->v, L, ra, rb);
     *res = (prox_rcc_result){.status = PROX_OK,
                              .distance = 0.0,
                              .p1 = x,
@@ -966,15 +973,16 @@ static RCC_NOINLINE void case1_overlap(const prox_rcc *A, const prox_rcc *B, con
  * minimum (the infinite solid cylinders are L - rA - rB apart and contain the finite ones,
  * docs/errata.md 8).  Overlapping: case1_overlap.
  * Returns 1 when answered, 0 for the general path: axes within 1e-3 rad of parallel (ill-conditioned
- * feet), not Case 1, or squared lengths (axes, radii, base offset) outside [1e-60, 1e60] (so that the
- * products of four lengths below neither overflow nor lose precision to underflow).  One square root and one division for a
- * disjoint pair, one more division for an overlapping one. */
-static int case1_raw(const prox_rcc *A, const prox_rcc *B, double aa, double bb, prox_rcc_result *res)
+ * feet), not Case 1, or squared lengths (axes, radii, base offset) outside [1e-60, 1e60] (so
+ * that the products of four lengths below neither overflow nor lose precision to underflow).  One
+ * square root and one division for a disjoint pair, one more division for an overlapping one. */
+static int case1_raw(const prox_rcc *A, const prox_rcc *B, double aa, double bb,
+                     prox_rcc_result *res)
 {
     prox_vec3 a = A->axis, b = B->axis, d = prox_v3_sub(B->base, A->base);
     double ra2 = A->radius * A->radius, rb2 = B->radius * B->radius;
-    if (!(aa >= 1e-60 && aa <= 1e60 && bb >= 1e-60 && bb <= 1e60 && prox_v3_norm2(d) <= 1e60 && ra2 >= 1e-60 &&
-          ra2 <= 1e60 && rb2 >= 1e-60 && rb2 <= 1e60))
+    if (!(aa >= 1e-60 && aa <= 1e60 && bb >= 1e-60 && bb <= 1e60 && prox_v3_norm2(d) <= 1e60 &&
+          ra2 >= 1e-60 && ra2 <= 1e60 && rb2 >= 1e-60 && rb2 <= 1e60))
         return 0;
     prox_vec3 n = prox_v3_cross(a, b), dxb = prox_v3_cross(d, b), dxa = prox_v3_cross(d, a);
     double nn = prox_v3_norm2(n);
@@ -1005,7 +1013,8 @@ static int case1_raw(const prox_rcc *A, const prox_rcc *B, double aa, double bb,
 
 /* Steps 1-6 for every pair that case1_raw does not answer (validated; squared heights ha2, hb2).
  * Kept out of line: its large query state would otherwise burden the Case 1 path's frame. */
-static RCC_NOINLINE prox_rcc_result rcc_general(const prox_rcc *a, const prox_rcc *b, double ha2, double hb2)
+static RCC_NOINLINE prox_rcc_result rcc_general(const prox_rcc *a, const prox_rcc *b, double ha2,
+                                                double hb2)
 {
     prox_rcc_result res = {0};
 

@@ -407,8 +407,8 @@ static void search_samples(sup_search *s)
 
 /* ---- GJK: a separating direction where sampling finds none ------------------------------------ */
 
-/* The foot of the origin on the affine hull of a vertex (m = 1), an edge (2) or a triangle (3), computed
- * so that its direction is accurate: perpendicular to the edge to rounding (a second rejection), or
+/* The foot of the origin on the affine hull of a vertex (m = 1), an edge (2) or a triangle (3),
+ * computed so that its direction is accurate: perpendicular to the edge to rounding (a second rejection), or
  * along the triangle's normal, a cross product free of cancellation.  For a long feature passing
  * close to the origin the barycentric combination carries an error of eps |feature| in every
  * direction, and phi, which is kinked across the feature, would lose |feature| times its angle. */
@@ -439,7 +439,7 @@ static int simplex_closest(prox_vec3 p[4], int *n, prox_vec3 *v)
         int m = 0;
         for (int i = 0; i < *n; ++i)
             if (mask >> i & 1) q[m++] = p[i];
-        /* x = q0 + sum mu_i (q_i - q0) with G mu = r, G_ij = e_i.e_j, r_i = -e_i.q0 (Cramer / elimination) */
+        /* x = q0 + sum mu_i (q_i - q0), G mu = r, G_ij = e_i.e_j, r_i = -e_i.q0 (elimination) */
         double G[3][4] = {{0}}, mu[3] = {0, 0, 0};
         for (int i = 1; i < m; ++i) e[i - 1] = prox_v3_sub(q[i], q[0]);
         for (int i = 0; i < m - 1; ++i) {
@@ -447,7 +447,7 @@ static int simplex_closest(prox_vec3 p[4], int *n, prox_vec3 *v)
             G[i][3] = -prox_v3_dot(e[i], q[0]);
         }
         int ok = 1;
-        for (int c = 0; c < m - 1 && ok; ++c) { /* Gaussian elimination, symmetric positive (semi)definite */
+        for (int c = 0; c < m - 1 && ok; ++c) { /* Gauss on a symmetric positive semidefinite G */
             if (!(G[c][c] > 1e-24 * (G[0][0] + 1e-300))) ok = 0;
             for (int r = c + 1; r < m - 1 && ok; ++r) {
                 double f = G[r][c] / G[c][c];
