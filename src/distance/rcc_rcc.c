@@ -950,7 +950,8 @@ static RCC_NOINLINE void case1_overlap(const prox_rcc *A, const prox_rcc *B, con
     rim_pos pb = {{da, da + ab},
                   {prox_v3_norm2(g->dxa) * bb * iab, prox_v3_norm2(prox_v3_sub(g->dxa, n)) * bb * iab}};
     int ain = nested_raw(A, B, &pa, ra * ra * nn * bb * iab, L2, cos2, prox_v3_neg(d));
-    int bin = ain ? 0 : nested_raw(B, A, &pb, rb * rb * nn * aa * iab, L2, cos2, d);
+    /* a rim wider than the other cylinder cannot fit in it (nested_raw): the early-resolving test */
+    int bin = rb <= ra && !ain ? nested_raw(B, A, &pb, rb * rb * nn * aa * iab, L2, cos2, d) : 0;
     prox_vec3 x = ain   ? prox_v3_mad(A->base, 0.5, a)
                   : bin ? prox_v3_mad(B->base, 0.5, b)
                         : between_axes(prox_v3_mad(A->base, g->sn * inv * inv, a),
