@@ -16,6 +16,7 @@
 
 #ifdef PROX_BENCH_HAVE_POLY
 #include "core/poly.h"
+#include "poly_ref.h"
 
 typedef struct poly_set {
     int degree;
@@ -103,30 +104,11 @@ static int distinct(const double *v, int n)
     return d;
 }
 
-/* p(x) and sum |c_k| |x|^k in long double. */
-static long double eval_ld(const double *c, int deg, long double x, long double *d1, long double *scale)
-{
-    long double p = c[deg], d = 0, s = fabsl((long double)c[deg]), ax = fabsl(x);
-    for (int k = deg - 1; k >= 0; --k) {
-        d = d * x + p;
-        p = p * x + c[k];
-        s = s * ax + fabsl((long double)c[k]);
-    }
-    *d1 = d;
-    *scale = s;
-    return p;
-}
-
-/* Adds the long-double Newton refinement of x (moving at most 1e-6 |x|) to ref[] when F vanishes
- * there to the rounding level and it is not already listed. */
+/* Adds the long-double Newton refinement of x0 (poly_ref.h) to ref[] when F vanishes there to the
+ * rounding level and it is not already listed. */
 static void add_ref(const double *c, int deg, double x0, double *ref, int *nref)
 {
-    long double x = x0, d, s, p = eval_ld(c, deg, x, &d, &s);
-    for (int it = 0; it < 60 && p != 0 && d != 0; ++it) {
-        long double xn = x - p / d, dn, sn, pn = eval_ld(c, deg, xn, &dn, &sn);
-        if (!(fabsl(pn) < fabsl(p)) || !(fabsl(xn - x0) <= 1e-6L * fabsl((long double)x0))) break;
-        x = xn, p = pn, d = dn, s = sn;
-    }
+    long double p, d, s, x = poly_ref_newton(c, deg, x0, &p, &d, &s);
     if (!(fabsl(p) <= 64.0L * deg * DBL_EPSILON * s) || *nref >= deg) return;
     for (int k = 0; k < *nref; ++k)
         if (fabs(ref[k] - (double)x) <= 1e-9 * fmax(1.0, fabs(ref[k]))) return;

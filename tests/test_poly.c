@@ -4,6 +4,7 @@
  * circle-circle-like polynomials, with every GSL root refined in long double as the reference. */
 #include "test_util.h"
 #include "core/poly.h"
+#include "../bench/poly_ref.h"
 #include <float.h>
 
 /* Coefficients (constant first) of prod (x - r_i) * prod over pairs (x^2 - 2 re x + re^2 + im^2). */
@@ -297,32 +298,11 @@ static void test_poly_closed_vs_gsl(void **state)
 
 /* ---- Fast path (derivative chain, degree 5..8) against the GSL reference path --------------- */
 
-/* p(x), p'(x) and sum |c_k| |x|^k in long double on the double coefficients. */
-static long double eval_ld(const double *c, int deg, long double x, long double *d1, long double *scale)
-{
-    long double p = c[deg], d = 0, s = fabsl((long double)c[deg]), ax = fabsl(x);
-    for (int k = deg - 1; k >= 0; --k) {
-        d = d * x + p;
-        p = p * x + c[k];
-        s = s * ax + fabsl((long double)c[k]);
-    }
-    *d1 = d;
-    *scale = s;
-    return p;
-}
-
-/* The root of the double polynomial next to r, by long-double Newton (stops when |p| stops falling
- * or the move would exceed 1e-6 |r0|),
- * and its attainable accuracy in double: 64 deg eps sum |c_k| |r|^k / |p'(r)| (infinite at a
- * double root). */
+/* The root of the double polynomial next to r, by long-double Newton (poly_ref.h), and its
+ * attainable accuracy in double: 64 deg eps sum |c_k| |r|^k / |p'(r)| (infinite at a double root). */
 static double refine_ld(const double *c, int deg, double r0, double *attain)
 {
-    long double x = r0, d, s, p = eval_ld(c, deg, x, &d, &s);
-    for (int it = 0; it < 60 && p != 0 && d != 0; ++it) {
-        long double xn = x - p / d, dn, sn, pn = eval_ld(c, deg, xn, &dn, &sn);
-        if (!(fabsl(pn) < fabsl(p)) || !(fabsl(xn - r0) <= 1e-6L * fabsl(r0))) break; /* stay next to r0 */
-        x = xn, p = pn, d = dn, s = sn;
-    }
+    long double p, d, s, x = poly_ref_newton(c, deg, r0, &p, &d, &s);
     *attain = d != 0 ? (double)(64.0L * deg * DBL_EPSILON * s / fabsl(d)) : INFINITY;
     return (double)x;
 }
@@ -345,7 +325,7 @@ static double nearest(const double *r, int n, double x)
 static int numerically_zero(const double *c, int deg, double a, double b)
 {
     for (int k = 0; k <= 8; ++k) {
-        long double y = a + (b - (long double)a) * k / 8, d, s, p = eval_ld(c, deg, y, &d, &s);
+        long double y = a + (b - (long double)a) * k / 8, d, s, p = poly_ref_eval(c, deg, y, &d, &s);
         if (!(fabsl(p) <= 64.0L * deg * DBL_EPSILON * s)) return 0;
     }
     return 1;
@@ -389,7 +369,7 @@ static int fast_vs_gsl(const double *c, int deg, const double *want, int nw, dou
     for (int pass = 0; pass < (want ? 1 : 2); ++pass, src = rf, ns = nf)
         for (int i = 0; i < ns; ++i) {
             double a, x = refine_ld(c, deg, src[i], &a);
-            long double d, s, p = eval_ld(c, deg, x, &d, &s);
+            long double d, s, p = poly_ref_eval(c, deg, x, &d, &s);
             int dup = 0;
             for (int k = 0; k < nref; ++k) dup |= fabs(ref[k] - x) <= 1e-9 * fabs(x);
             /* a path's root is a true root only where p vanishes to the rounding level */
@@ -410,13 +390,13 @@ static int fast_vs_gsl(const double *c, int deg, const double *want, int nw, dou
         }
     }
     for (int j = 0; j < ng; ++j) { /* GSL roots that are not roots (seen with tiny leading terms) */
-        long double d, s, p = eval_ld(c, deg, rg[j], &d, &s);
+        long double d, s, p = poly_ref_eval(c, deg, rg[j], &d, &s);
         *gsl_miss += !(fabsl(p) <= 1e-10L * s);
     }
     for (int j = 0; j < nf; ++j) {
         int ok = 0;
         for (int i = 0; i < nref && !ok; ++i) ok = isfinite(match(c, deg, &rf[j], 1, ref[i], att[i]));
-        long double d, s, p = eval_ld(c, deg, rf[j], &d, &s);
+        long double d, s, p = poly_ref_eval(c, deg, rf[j], &d, &s);
         if (!ok && !(fabsl(p) <= 1e-10L * s)) {
             print_error("degree %d: fast root %.17g not a root (|p| = %.3Lg of %.3Lg)\n", deg, rf[j], fabsl(p), s);
             for (int k = 0; k <= deg; ++k) print_error(" c%d=%.17g", k, c[k]);
