@@ -82,6 +82,35 @@ static int rcc_inside_brute(const prox_rcc *a, const prox_rcc *b, double *margin
     return in0 && in1;
 }
 
+/* Nesting flags checked against the brute force: pairs decided (brute-force margin above 1e-9 S),
+ * of which nested, and mismatches. */
+typedef struct nest_tally {
+    int decided, inside, bad;
+} nest_tally;
+
+/* prox's nesting flags of (small, big), in both argument orders, against rcc_inside_brute where its
+ * margin exceeds 1e-9 S; returns prox's result for (small, big) and, in *rev, for (big, small). */
+static prox_rcc_result check_nesting(int i, const prox_rcc *small, const prox_rcc *big, nest_tally *t,
+                                     prox_rcc_result *rev)
+{
+    double S = prox_rcc_pair_scale(small, big), m_ab, m_ba;
+    int ab = rcc_inside_brute(small, big, &m_ab), ba = rcc_inside_brute(big, small, &m_ba);
+    prox_rcc_result d1 = prox_rcc_distance(small, big), d2 = prox_rcc_distance(big, small);
+    assert_int_equal(d1.status, PROX_OK);
+    assert_int_equal(d2.status, PROX_OK);
+    if (m_ab > 1e-9 * S) {
+        ++t->decided;
+        t->inside += ab;
+        if ((d1.a_in_b != ab || d2.b_in_a != ab) && t->bad++ < 5)
+            print_error("pair %d: A in B brute %d, prox %d / %d (margin %.3g S)\n", i, ab, d1.a_in_b,
+                        d2.b_in_a, m_ab / S);
+    }
+    if (m_ba > 1e-9 * S && (d1.b_in_a != ba || d2.a_in_b != ba) && t->bad++ < 5)
+        print_error("pair %d: B in A brute %d, prox %d / %d\n", i, ba, d1.b_in_a, d2.a_in_b);
+    *rev = d2;
+    return d1;
+}
+
 /* Containment flags against the brute force, on a small cylinder placed where it is partly in, partly
  * out of a large one (centres inside, random tilts and sizes): both outcomes are common there. */
 static void test_rcc_random_containment(void **state)
@@ -89,7 +118,7 @@ static void test_rcc_random_containment(void **state)
     (void)state;
     sg_rng r = sg_seed(1122);
     const int n = 4000;
-    int bad = 0, inside = 0, decided = 0;
+    nest_tally t = {0, 0, 0};
     for (int i = 0; i < n; ++i) {
         double rb = 1.0 + 4.0 * sg_u(&r), hb = 2.0 + 8.0 * sg_u(&r);
         prox_rcc big = {prox_v3(0, 0, 0), prox_v3_scale(sg_unit(&r), hb), rb};
@@ -99,27 +128,13 @@ static void test_rcc_random_containment(void **state)
         prox_vec3 ca = prox_v3_add(prox_v3_scale(w, hb * sg_u(&r)), prox_v3_scale(sg_perp(&r, w), rb * sg_u(&r)));
         prox_vec3 wa = sg_u(&r) < 0.3 ? sg_tilt(&r, w, sg_log(&r, 1e-6, 0.3)) : sg_unit(&r);
         prox_rcc small = {prox_v3_mad(ca, -0.5 * ha, wa), prox_v3_scale(wa, ha), ra};
-        double S = prox_rcc_pair_scale(&small, &big), m_ab, m_ba;
-        int ab = rcc_inside_brute(&small, &big, &m_ab), ba = rcc_inside_brute(&big, &small, &m_ba);
-        prox_rcc_result d1 = prox_rcc_distance(&small, &big), d2 = prox_rcc_distance(&big, &small);
-        assert_int_equal(d1.status, PROX_OK);
-        if (m_ab > 1e-9 * S) {
-            ++decided;
-            inside += ab;
-            if (d1.a_in_b != ab || d2.b_in_a != ab) {
-                if (bad++ < 5)
-                    print_error("pair %d: A in B brute %d, prox %d / %d (margin %.3g S)\n", i, ab, d1.a_in_b,
-                                d2.b_in_a, m_ab / S);
-            }
-        }
-        if (m_ba > 1e-9 * S && (d1.b_in_a != ba || d2.a_in_b != ba) && bad++ < 5)
-            print_error("pair %d: B in A brute %d, prox %d\n", i, ba, d1.b_in_a);
-        if (ab) assert_true(d1.interfere && d1.distance == 0.0);
+        prox_rcc_result d2, d1 = check_nesting(i, &small, &big, &t, &d2);
+        if (d1.a_in_b) assert_true(d1.interfere && d1.distance == 0.0);
     }
-    printf("# %d containment pairs, %d decided by the brute force (%d inside), mismatches %d\n", n, decided,
-           inside, bad);
-    assert_true(inside > decided / 10 && inside < decided - decided / 10); /* both outcomes exercised */
-    assert_int_equal(bad, 0);
+    printf("# %d containment pairs, %d decided by the brute force (%d inside), mismatches %d\n", n,
+           t.decided, t.inside, t.bad);
+    assert_true(t.inside > t.decided / 10 && t.inside < t.decided - t.decided / 10); /* both outcomes */
+    assert_int_equal(t.bad, 0);
 }
 
 /* Nesting flags of overlapping Case-1 pairs (the feet of the common perpendicular on both axes, which
@@ -132,7 +147,8 @@ static void test_rcc_case1_nesting(void **state)
     (void)state;
     sg_rng r = sg_seed(2211);
     const int n = 5000;
-    int bad = 0, inside = 0, decided = 0, case1 = 0;
+    nest_tally tally = {0, 0, 0};
+    int case1 = 0;
     for (int i = 0; i < n; ++i) {
         double rb = sg_log(&r, 0.1, 10.0), hb = sg_log(&r, 0.1, 10.0);
         prox_vec3 w = sg_unit(&r);
@@ -143,28 +159,16 @@ static void test_rcc_case1_nesting(void **state)
         prox_rcc big = {prox_v3_scale(sg_unit(&r), 10.0 * sg_u(&r)), prox_v3_scale(w, hb), rb};
         prox_vec3 foot = prox_v3_mad(prox_v3_mad(big.base, t, w), L, nrm);
         prox_rcc small = {prox_v3_mad(foot, -s, wa), prox_v3_scale(wa, ha), ra};
-        double S = prox_rcc_pair_scale(&small, &big), m_ab, m_ba;
-        int ab = rcc_inside_brute(&small, &big, &m_ab), ba = rcc_inside_brute(&big, &small, &m_ba);
-        prox_rcc_result d1 = prox_rcc_distance(&small, &big), d2 = prox_rcc_distance(&big, &small);
-        assert_int_equal(d1.status, PROX_OK);
+        prox_rcc_result d2, d1 = check_nesting(i, &small, &big, &tally, &d2);
         assert_true(d1.interfere && d2.interfere && d1.distance == 0.0 && d2.distance == 0.0);
         case1 += d1.agarwal == PROX_CASE_1;
-        if (m_ab > 1e-9 * S) {
-            ++decided;
-            inside += ab;
-            if ((d1.a_in_b != ab || d2.b_in_a != ab) && bad++ < 5)
-                print_error("pair %d: A in B brute %d, prox %d / %d (margin %.3g S)\n", i, ab,
-                            d1.a_in_b, d2.b_in_a, m_ab / S);
-        }
-        if (m_ba > 1e-9 * S && (d1.b_in_a != ba || d2.a_in_b != ba) && bad++ < 5)
-            print_error("pair %d: B in A brute %d, prox %d / %d\n", i, ba, d1.b_in_a, d2.a_in_b);
     }
     printf("# %d overlapping Case-1 constructions (%d classified Case 1), %d decided by the brute "
            "force (%d inside), mismatches %d\n",
-           n, case1, decided, inside, bad);
+           n, case1, tally.decided, tally.inside, tally.bad);
     assert_true(case1 > n * 9 / 10);
-    assert_true(inside > decided / 10 && inside < decided - decided / 10); /* both outcomes exercised */
-    assert_int_equal(bad, 0);
+    assert_true(tally.inside > tally.decided / 10 && tally.inside < tally.decided - tally.decided / 10); /* both outcomes */
+    assert_int_equal(tally.bad, 0);
 }
 
 /* Case-1 pairs (nested, overlapping, disjoint) scaled by 2^-120 and 2^120, exact binary scalings that
