@@ -487,24 +487,6 @@ static void test_relation_internal_tangency(void **st)
  * relation must agree. Found in session 2: a needle beside a long plate reported touching at a
  * 2.4e-11 x scale gap (cancellation in the segment-cylinder clip), and BOX-RCC's touching band was
  * 3.5e-12 x scale. */
-static prox_shape extreme_shape(test_rng *g, int kind, prox_vec3 c)
-{
-    if (kind == 0) {
-        prox_rcc x = {c, prox_v3_scale(test_unit(g), pow(10.0, test_range(g, -3, 3))), pow(10.0, test_range(g, -3, 3))};
-        return prox_shape_from_rcc(x);
-    }
-    if (kind == 1) {
-        test_rot R = test_random_rot(g);
-        prox_box b;
-        b.corner = c;
-        for (int k = 0; k < 3; ++k)
-            b.edge[k] = prox_v3_scale(test_rot_apply(&R, prox_v3(k == 0, k == 1, k == 2)), pow(10.0, test_range(g, -3, 3)));
-        return prox_shape_from_box(b);
-    }
-    prox_sph s = {c, pow(10.0, test_range(g, -3, 3))};
-    return prox_shape_from_sph(s);
-}
-
 static void test_extreme_near_touching(void **st)
 {
     (void)st;
@@ -513,9 +495,9 @@ static void test_extreme_near_touching(void **st)
         for (int kb = 0; kb < 3; ++kb) {
             int moved = 0, bad = 0;
             for (int i = 0; i < 4000; ++i) {
-                prox_shape A = extreme_shape(&g, ka, prox_v3(0, 0, 0));
+                prox_shape A = test_extreme_shape(&g, ka, prox_v3(0, 0, 0));
                 double sz = prox_shape_size(&A);
-                prox_shape B = extreme_shape(&g, kb, prox_v3_scale(test_unit(&g), pow(10.0, test_range(&g, -2, 1)) * sz));
+                prox_shape B = test_extreme_shape(&g, kb, prox_v3_scale(test_unit(&g), pow(10.0, test_range(&g, -2, 1)) * sz));
                 prox_distance_result d = prox_shape_distance(&A, &B);
                 assert_int_equal(d.status, PROX_OK);
                 double S = prox_shape_pair_scale(&A, &B);

@@ -11,7 +11,6 @@
 #include "prox/query.h"
 #include "prox/sat.h"
 #include "prox/support.h"
-#include "../bench/stress_gen.h"
 
 typedef struct vset {
     int n;
@@ -296,24 +295,6 @@ static void test_support_generic_shapes(void **state)
     assert_int_equal(prox_shape_signed_distance_support(&r1, &badk).status, PROX_EINVAL_SHAPE_KIND);
 }
 
-/* A random macrobody of kind k (0 RCC, 1 BOX, 2 SPH), sizes log-uniform over 1e-3 .. 1e3, at c. */
-static prox_shape near_touch_shape(sg_rng *r, int k, prox_vec3 c)
-{
-    if (k == 0) {
-        prox_vec3 axis = prox_v3_scale(sg_unit(r), sg_log(r, 1e-3, 1e3));
-        return prox_shape_from_rcc((prox_rcc){c, axis, sg_log(r, 1e-3, 1e3)});
-    }
-    if (k == 1) {
-        double q[4];
-        sg_random_quat(r, q);
-        prox_box b = {.corner = c};
-        for (int i = 0; i < 3; ++i)
-            b.edge[i] = prox_v3_scale(sg_qrot(q, prox_v3(i == 0, i == 1, i == 2)), sg_log(r, 1e-3, 1e3));
-        return prox_shape_from_box(b);
-    }
-    return prox_shape_from_sph((prox_sph){c, sg_log(r, 1e-3, 1e3)});
-}
-
 /* The generic support-function method on near-touching DISJOINT pairs of every kind: a random pair
  * moved along its contact normal to a gap of 1e-12 .. 1e-2 x scale (translating along the normal
  * changes the distance by exactly the move).  There the cone of separating directions is too narrow
@@ -323,7 +304,7 @@ static prox_shape near_touch_shape(sg_rng *r, int k, prox_vec3 c)
 static void test_support_near_touching(void **state)
 {
     (void)state;
-    sg_rng r = sg_seed(4711);
+    test_rng r = test_rng_seed(4711);
     const char *kn[] = {"RCC", "BOX", "SPH"};
     int bad = 0, total = 0;
     for (int ka = 0; ka < 3; ++ka)
@@ -331,14 +312,14 @@ static void test_support_near_touching(void **state)
             double worst = 0.0;
             int cnt = 0;
             for (int i = 0; i < 12000; ++i) {
-                prox_shape a = near_touch_shape(&r, ka, prox_v3(0, 0, 0));
+                prox_shape a = test_extreme_shape(&r, ka, prox_v3(0, 0, 0));
                 double sz = prox_shape_size(&a);
-                prox_vec3 cb = prox_v3_scale(sg_unit(&r), sg_log(&r, 1e-2, 1e1) * sz);
-                prox_shape b = near_touch_shape(&r, kb, cb);
+                prox_vec3 cb = prox_v3_scale(test_unit(&r), pow(10.0, test_range(&r, -2, 1)) * sz);
+                prox_shape b = test_extreme_shape(&r, kb, cb);
                 prox_distance_result d = prox_shape_distance(&a, &b);
                 if (d.status != PROX_OK || !(d.distance > 0.0)) continue;
                 prox_vec3 nrm = prox_v3_scale(prox_v3_sub(d.p2, d.p1), 1.0 / d.distance);
-                double S0 = prox_shape_pair_scale(&a, &b), g = sg_log(&r, 1e-12, 1e-2) * S0;
+                double S0 = prox_shape_pair_scale(&a, &b), g = pow(10.0, test_range(&r, -12, -2)) * S0;
                 prox_shape b2;
                 prox_vec3 move = prox_v3_scale(nrm, g - d.distance);
                 assert_int_equal(prox_shape_translated(&b, move, &b2), PROX_OK);

@@ -1,5 +1,5 @@
 /* Shared helpers for the cmocka tests: assert_near (Debian's cmocka has no float asserts),
- * a seeded RNG (xoshiro256**), random rotations, and the GSL handler switch. */
+ * a seeded RNG (xoshiro256**), random rotations and shapes, and the GSL handler switch. */
 #ifndef PROX_TEST_UTIL_H
 #define PROX_TEST_UTIL_H
 
@@ -79,6 +79,28 @@ static inline prox_vec3 test_rot_apply(const test_rot *R, prox_vec3 v)
     return prox_v3(R->m[0][0] * v.x + R->m[0][1] * v.y + R->m[0][2] * v.z,
                    R->m[1][0] * v.x + R->m[1][1] * v.y + R->m[1][2] * v.z,
                    R->m[2][0] * v.x + R->m[2][1] * v.y + R->m[2][2] * v.z);
+}
+
+/* A random macrobody of kind 0 (RCC), 1 (BOX) or 2 (SPH) at c, every size log-uniform over
+ * 1e-3 .. 1e3 and a random orientation: the extreme-aspect sweeps. */
+static inline prox_shape test_extreme_shape(test_rng *g, int kind, prox_vec3 c)
+{
+    if (kind == 0) {
+        prox_vec3 axis = prox_v3_scale(test_unit(g), pow(10.0, test_range(g, -3, 3)));
+        prox_rcc x = {c, axis, pow(10.0, test_range(g, -3, 3))};
+        return prox_shape_from_rcc(x);
+    }
+    if (kind == 1) {
+        test_rot R = test_random_rot(g);
+        prox_box b;
+        b.corner = c;
+        for (int k = 0; k < 3; ++k)
+            b.edge[k] = prox_v3_scale(test_rot_apply(&R, prox_v3(k == 0, k == 1, k == 2)),
+                                      pow(10.0, test_range(g, -3, 3)));
+        return prox_shape_from_box(b);
+    }
+    prox_sph s = {c, pow(10.0, test_range(g, -3, 3))};
+    return prox_shape_from_sph(s);
 }
 
 /* Call first in every test main: the library must never rely on GSL's aborting handler. */
