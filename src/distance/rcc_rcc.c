@@ -947,6 +947,8 @@ static RCC_NOINLINE void case1_overlap(const prox_rcc *A, const prox_rcc *B, con
     double cos2 = ab * ab * iab, L2 = L * L;
     rim_pos pa = {{-db, ab - db},
                   {prox_v3_norm2(g->dxb) * aa * iab, prox_v3_norm2(prox_v3_sub(n, g->dxb)) * aa * iab}};
+    /* pb is needed only when rB <= rA, yet computing it inside that branch measured 6-7 ns slower
+     * per overlapping pair (gcc 12 -O3): it is computed up front on purpose. */
     rim_pos pb = {{da, da + ab},
                   {prox_v3_norm2(g->dxa) * bb * iab, prox_v3_norm2(prox_v3_sub(g->dxa, n)) * bb * iab}};
     int ain = nested_raw(A, B, &pa, ra * ra * nn * bb * iab, L2, cos2, prox_v3_neg(d));
