@@ -497,7 +497,8 @@ static void test_extreme_near_touching(void **st)
             for (int i = 0; i < 4000; ++i) {
                 prox_shape A = test_extreme_shape(&g, ka, prox_v3(0, 0, 0));
                 double sz = prox_shape_size(&A);
-                prox_shape B = test_extreme_shape(&g, kb, prox_v3_scale(test_unit(&g), pow(10.0, test_range(&g, -2, 1)) * sz));
+                prox_vec3 cb = prox_v3_scale(test_unit(&g), pow(10.0, test_range(&g, -2, 1)) * sz);
+                prox_shape B = test_extreme_shape(&g, kb, cb);
                 prox_distance_result d = prox_shape_distance(&A, &B);
                 assert_int_equal(d.status, PROX_OK);
                 double S = prox_shape_pair_scale(&A, &B);

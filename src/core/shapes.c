@@ -18,7 +18,8 @@ prox_status prox_rcc_validate_h2(const prox_rcc *c, double *h2)
      * else goes through the ordered checks below, which name the fault or accept a cylinder at the
      * very ends of the range exactly as |axis| would. */
     double hh2 = prox_v3_norm2(c->axis);
-    const double lo = (1.0 + 1e-7) * PROX_MIN_SIZE * PROX_MIN_SIZE, hi = (1.0 - 1e-7) * PROX_MAX_COORD * PROX_MAX_COORD;
+    const double lo = (1.0 + 1e-7) * PROX_MIN_SIZE * PROX_MIN_SIZE;
+    const double hi = (1.0 - 1e-7) * PROX_MAX_COORD * PROX_MAX_COORD;
     if (coord3_ok(c->base) & coord3_ok(c->axis) & size_ok(c->radius) & (hh2 > lo) & (hh2 < hi)) {
         *h2 = hh2;
         return PROX_OK;

@@ -240,7 +240,7 @@ static int ridge_kinks(sup_search *s, prox_vec3 u, prox_vec3 v, double *lo, doub
     prox_vec3 r[6];
     int n = sup_ridges(s->a, r);
     n += sup_ridges(s->b, r + n);
-    const double dl = 1e-7;
+    const double dl = 1e-7, noise = 16.0 * DBL_EPSILON * s->scale; /* noise: rounding of phi */
     for (int i = 0; i < n; ++i) {
         double ru = prox_v3_dot(u, r[i]), rv = prox_v3_dot(v, r[i]);
         if (fabs(ru) + fabs(rv) < 1e-12) continue; /* this ridge itself (or parallel to it) */
@@ -255,7 +255,6 @@ static int ridge_kinks(sup_search *s, prox_vec3 u, prox_vec3 v, double *lo, doub
             record(s, d, f);
             /* Differences within rounding of phi decide nothing: in a very flat stretch (a rim
              * seen edge-on) a kink that is not a minimum looked like one and ended the search. */
-            double noise = 16.0 * DBL_EPSILON * s->scale;
             if (fl > f + noise && fr > f + noise) return 1;
             if (fabs(fl - fr) <= noise) continue;
             if (fl < fr) *hi = t; else *lo = t;
@@ -412,8 +411,8 @@ static void search_samples(sup_search *s)
 /* ---- GJK: a separating direction where sampling finds none ------------------------------------ */
 
 /* The foot of the origin on the affine hull of a vertex (m = 1), an edge (2) or a triangle (3),
- * computed so that its direction is accurate: perpendicular to the edge to rounding (a second rejection), or
- * along the triangle's normal, a cross product free of cancellation.  For a long feature passing
+ * computed so that its direction is accurate: perpendicular to the edge to rounding (a second
+ * rejection), or along the triangle's normal, a cross product free of cancellation.  For a long feature passing
  * close to the origin the barycentric combination carries an error of eps |feature| in every
  * direction, and phi, which is kinked across the feature, would lose |feature| times its angle. */
 static prox_vec3 face_foot(const prox_vec3 *p, int m)
