@@ -412,9 +412,10 @@ static void search_samples(sup_search *s)
 
 /* The foot of the origin on the affine hull of a vertex (m = 1), an edge (2) or a triangle (3),
  * computed so that its direction is accurate: perpendicular to the edge to rounding (a second
- * rejection), or along the triangle's normal, a cross product free of cancellation.  For a long feature passing
- * close to the origin the barycentric combination carries an error of eps |feature| in every
- * direction, and phi, which is kinked across the feature, would lose |feature| times its angle. */
+ * rejection), or along the triangle's normal, a cross product free of cancellation.  For a long
+ * feature passing close to the origin the barycentric combination carries an error of
+ * eps |feature| in every direction, and phi, which is kinked across the feature, would lose
+ * |feature| times its angle. */
 static prox_vec3 face_foot(const prox_vec3 *p, int m)
 {
     if (m == 1) return p[0];
