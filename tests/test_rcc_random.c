@@ -172,6 +172,45 @@ static void test_rcc_case1_nesting(void **state)
     assert_int_equal(tally.bad, 0);
 }
 
+/* Nesting flags of overlapping Case-1 pairs right at the radial boundary: the big cylinder's radius
+ * is set to the small one's farthest rim distance from its axis (long double) times 1 +- delta,
+ * delta log-uniform in [1e-8, 1e-2], with room to spare axially, so the answer flips with the sign
+ * and the decision falls in or near the band between the root-free bounds.  Weakening either
+ * bound by a relative 1e-3 fails this test. */
+static void test_rcc_case1_nesting_boundary(void **state)
+{
+    (void)state;
+    sg_rng r = sg_seed(4477);
+    const int n = 4000;
+    nest_tally tally = {0, 0, 0};
+    int case1 = 0;
+    for (int i = 0; i < n; ++i) {
+        double ha = sg_log(&r, 0.1, 10.0), ra = ha * sg_log(&r, 0.05, 5.0);
+        prox_vec3 w = sg_unit(&r);
+        prox_vec3 wa = sg_u(&r) < 0.3 ? sg_tilt(&r, w, sg_log(&r, 2e-3, 0.3)) : sg_unit(&r);
+        double hb = 4.0 * (ha + 2.0 * ra) * (1.0 + sg_u(&r)), t = hb * (0.4 + 0.2 * sg_u(&r));
+        double s = ha * sg_u(&r), L = ra * sg_u(&r);
+        prox_vec3 nrm = prox_v3_normalize(prox_v3_cross(wa, w));
+        prox_rcc big = {prox_v3_scale(sg_unit(&r), 10.0 * sg_u(&r)), prox_v3_scale(w, hb), 1.0};
+        prox_vec3 foot = prox_v3_mad(prox_v3_mad(big.base, t, w), L, nrm);
+        prox_rcc small = {prox_v3_mad(foot, -s, wa), prox_v3_scale(wa, ha), ra};
+        long double m0 = tb_circle_line_max_dist(small.base, wa, ra, big.base, w);
+        long double m1 = tb_circle_line_max_dist(prox_v3_add(small.base, small.axis), wa, ra, big.base, w);
+        double delta = sg_log(&r, 1e-8, 1e-2) * (sg_u(&r) < 0.5 ? -1.0 : 1.0);
+        big.radius = (double)((m0 > m1 ? m0 : m1) * (1.0L + delta));
+        prox_rcc_result d2, d1 = check_nesting(i, &small, &big, &tally, &d2);
+        assert_true(d1.interfere && d2.interfere);
+        case1 += d1.agarwal == PROX_CASE_1 && d2.agarwal == PROX_CASE_1;
+    }
+    printf("# %d Case-1 pairs at the nesting boundary (%d classified Case 1), %d decided by the brute "
+           "force (%d inside), mismatches %d\n",
+           n, case1, tally.decided, tally.inside, tally.bad);
+    assert_int_equal(case1, n);
+    assert_true(tally.decided > n * 9 / 10);
+    assert_true(tally.inside > tally.decided / 3 && tally.inside < tally.decided - tally.decided / 3);
+    assert_int_equal(tally.bad, 0);
+}
+
 /* Case-1 pairs (nested, overlapping, disjoint) scaled by 2^-120 and 2^120, exact binary scalings that
  * move every squared length outside the range where prox decides Case 1 from the raw input (the
  * general path answers them): distance, points and nesting flags must scale exactly with the pair. */
@@ -261,6 +300,7 @@ int main(void)
         cmocka_unit_test(test_rcc_random_verdict),
         cmocka_unit_test(test_rcc_random_containment),
         cmocka_unit_test(test_rcc_case1_nesting),
+        cmocka_unit_test(test_rcc_case1_nesting_boundary),
         cmocka_unit_test(test_rcc_case1_extreme_scale),
         cmocka_unit_test(test_rcc_random_extreme_aspect),
     };

@@ -178,14 +178,13 @@ static void axis_feet(const cyl *A, const cyl *B, prox_vec3 n, double nn, double
     *t = prox_v3_dot(prox_v3_cross(d0, A->w), n) / nn;
 }
 
-/* The common point chosen on a segment of length L from A's axis (f1) towards B's along unit u, when
- * L <= rA + rB: at distance <= rA from f1 and <= rB from the other end, balanced between the two. */
-static prox_vec3 between_axes(prox_vec3 f1, prox_vec3 u, double L, double ra, double rb)
+/* The common point on the common perpendicular of the axes (feet f1 on A's, f2 on B's) when they are
+ * at most rA + rB apart: the point dividing f1 f2 in the ratio rA : rB, which is |f2 - f1| rA /
+ * (rA + rB) <= rA from A's axis and |f2 - f1| rB / (rA + rB) <= rB from B's (case1_overlap takes the
+ * same point). */
+static prox_vec3 between_axes(prox_vec3 f1, prox_vec3 f2, double ra, double rb)
 {
-    double lo = L - rb > 0.0 ? L - rb : 0.0, hi = ra < L ? ra : L;
-    double a = 0.5 * (L + ra - rb);
-    a = a < lo ? lo : (a > hi ? hi : a);
-    return prox_v3_mad(f1, a, u);
+    return prox_v3_mad(f1, ra / (ra + rb), prox_v3_sub(f2, f1));
 }
 
 /* S-S candidate when both feet lie on the finite axes; an overlap witness when the axes are closer
@@ -197,7 +196,7 @@ static void cand_lat_lat(query *q, double s, double t)
     prox_vec3 u = prox_v3_sub(f2, f1);
     double L = prox_v3_norm(u);
     if (L <= q->A.r + q->B.r) {
-        note_common(q, L > 0.0 ? between_axes(f1, prox_v3_scale(u, 1.0 / L), L, q->A.r, q->B.r) : f1);
+        note_common(q, between_axes(f1, f2, q->A.r, q->B.r));
         return;
     }
     u = prox_v3_scale(u, 1.0 / L);
@@ -881,10 +880,11 @@ static void fill_disjoint(const query *q, prox_rcc_result *res, prox_vec3 origin
     res->point_set = is_point_set(q);
 }
 
-/* Where the rim centres of one cylinder (`in`) lie with respect to the other's (`out`) axis o: axial
- * coordinates from out's base times |o|, and squared distances from the axis. */
+/* Where the rim centres of one cylinder (`in`, axis i) lie with respect to the other's (`out`) axis
+ * o: axial coordinates from out's base times |o| (c.o), and squared cross products |c x o|^2
+ * (squared distances from the axis times |o|^2). */
 typedef struct rim_pos {
-    double t[2], rho2[2];
+    double t[2], x2[2];
 } rim_pos;
 
 /* The exact test of nested_raw for a rim between its bounds: circle_in_cyl on both rims, with out
@@ -899,65 +899,80 @@ static RCC_NOINLINE int nested_exact(const prox_rcc *in, const prox_rcc *out, pr
            circle_in_cyl(prox_v3_add(c0, in->axis), wi, in->radius, &oc, 0.0);
 }
 
+/* The squared products of the axes that the nesting tests share: |i|^2, |o|^2, |i x o|^2,
+ * (i.o)^2 and dn2 = (d.(i x o))^2, d the offset of the bases (|d.n| / |n| is the axes' distance). */
+typedef struct axes2 {
+    double ii, oo, nn, io2, dn2;
+} axes2;
+
 /* Nesting of `in` in `out` (Agarwal Fig. 2), exact: `in` lies in `out` iff both rims do (out convex).
  * A rim (radius r) fits axially iff its centre is r sin(theta) from each end (theta the angle of the
- * axes).  Radially, its projection on out's cross-section is an ellipse of semi-axes r (along the
- * common normal e of the axes) and r |cos(theta)|, centred rho from the axis, and its farthest
+ * axes): with t = c.o, t >= 0 and |i|^2 t^2 >= r^2 |n|^2 at the base, the same for |o|^2 - t at the
+ * top.  Radially, the rim's projection on out's cross-section is an ellipse of semi-axes r (along
+ * the common normal e of the axes) and r |cos(theta)|, centred rho from the axis, and its farthest
  * distance D from the axis satisfies
  *     rho^2 + 2 r |ue| + r^2  <=  D^2  <=  rho^2 + 2 r sqrt(ue^2 + cos^2(theta) (rho^2 - ue^2)) + r^2,
  * ue the centre's offset from the axis along e, which is the distance L of the axes for both rims
  * and both cylinders (the lower bound is the ellipse's end on its major axis).  The rim is out when
  * the lower bound exceeds ro^2, in when the upper one does not; only in between (rare) does
- * circle_in_cyl find D.  No root and no division: half2 = (r sin(theta) |o|)^2, L2 = L^2.
+ * circle_in_cyl find D.  With rho^2 = X / |o|^2 (X = |c x o|^2), L^2 = dn2 / |n|^2,
+ * cos^2 = (i.o)^2 / (|i|^2 |o|^2) and |n|^2 = |i|^2 |o|^2 - (i.o)^2, and G = (ro^2 - r^2) |o|^2 - X
+ * (the slack times |o|^2), the two tests clear their denominators to
+ *     in:   G >= 0  and  4 r^2 (|o|^2 dn2 + (i.o)^2 X) <= |i|^2 G^2,
+ *     out:  G < 0   or   4 r^2 |o|^4 dn2 > |n|^2 G^2:
+ * no root and no division (products of up to six squared lengths: case1_raw bounds them).
  * p: the rim centres (rim_pos); c0: the base centre of `in` relative to out's base (for the exact
  * test only). */
-static int nested_raw(const prox_rcc *in, const prox_rcc *out, const rim_pos *p, double half2,
-                      double L2, double cos2, prox_vec3 c0)
+static int nested_raw(const prox_rcc *in, const prox_rcc *out, const rim_pos *p, const axes2 *g,
+                      prox_vec3 c0)
 {
-    double ri2 = in->radius * in->radius, ro = out->radius, oo = prox_v3_norm2(out->axis);
+    double ri2 = in->radius * in->radius, ro2 = out->radius * out->radius;
     double lo = p->t[0] < p->t[1] ? p->t[0] : p->t[1];
-    double rest = oo - (p->t[0] < p->t[1] ? p->t[1] : p->t[0]);
-    int yes = (lo >= 0.0) & (rest >= 0.0) & (lo * lo >= half2) & (rest * rest >= half2), no = !yes;
+    double rest = g->oo - (p->t[0] < p->t[1] ? p->t[1] : p->t[0]), h2 = ri2 * g->nn;
+    int yes = (lo >= 0.0) & (rest >= 0.0) & (g->ii * lo * lo >= h2) & (g->ii * rest * rest >= h2);
+    int no = !yes;
+    double in_l = 4.0 * ri2 * g->oo * g->dn2, out_l = in_l * g->oo, sl = (ro2 - ri2) * g->oo;
     for (int k = 0; k < 2; ++k) {
-        double g = ro * ro - p->rho2[k] - ri2, g2 = g * g;
-        yes &= (g >= 0.0) & (4.0 * ri2 * (L2 + cos2 * (p->rho2[k] - L2)) <= g2);
-        no |= (g < 0.0) | (4.0 * ri2 * L2 > g2);
+        double G = sl - p->x2[k], G2 = G * G;
+        yes &= (G >= 0.0) & (in_l + 4.0 * ri2 * g->io2 * p->x2[k] <= g->ii * G2);
+        no |= (G < 0.0) | (out_l > g->nn * G2);
     }
     return yes | no ? yes : nested_exact(in, out, c0);
 }
 
 /* What case1_raw hands to case1_overlap: d = bB - bA, n = a x b, d x a, d x b, |a|^2, |b|^2,
- * |n|^2, (d x b).n (A's foot times |n|^2) and d.n (the axes' distance times |n|). */
+ * |n|^2, (d x b).n and (d x a).n (the feet times |n|^2, Agarwal Sec. 3.1) and d.n. */
 typedef struct case1_geom {
     prox_vec3 d, n, dxa, dxb;
-    double aa, bb, nn, sn, dn;
+    double aa, bb, nn, sn, tn, dn;
 } case1_geom;
 
-/* Overlapping Case 1: the point between the axes is in both by construction; nesting by nested_raw,
- * from the cross products of the feet (A's rim centres relative to B's base are -d and a - d, B's
- * relative to A's are d and d + b).  Out of line, so that the disjoint path stays lean. */
+/* Overlapping Case 1.  Nesting by nested_raw, from the cross products of the feet (A's rim centres
+ * relative to B's base are -d and a - d, B's relative to A's are d and d + b); B in A only when
+ * rB <= rA (a wider rim cannot fit).  The common point: the middle of the inner cylinder's axis
+ * when nested, else the point dividing the common perpendicular of the axes (feet f1, f2, length
+ * L <= rA + rB) in the ratio rA : rB, which is L rA / (rA + rB) <= rA from A's axis and
+ * L rB / (rA + rB) <= rB from B's, so in both (no root).  The three points are blended with 0/1
+ * weights (exact) rather than chosen by a branch: nested or not is a coin toss in a mixture.  Out
+ * of line, so that the disjoint path stays lean. */
 static RCC_NOINLINE void case1_overlap(const prox_rcc *A, const prox_rcc *B, const case1_geom *g,
                                        prox_rcc_result *res)
 {
     prox_vec3 a = A->axis, b = B->axis, d = g->d, n = g->n;
-    double aa = g->aa, bb = g->bb, nn = g->nn, ra = A->radius, rb = B->radius;
-    double inv = 1.0 / sqrt(nn), L = fabs(g->dn) * inv;
-    double iab = 1.0 / (aa * bb), ab = prox_v3_dot(a, b);
+    double ra = A->radius, rb = B->radius, ab = prox_v3_dot(a, b);
     double da = prox_v3_dot(d, a), db = prox_v3_dot(d, b);
-    double cos2 = ab * ab * iab, L2 = L * L;
-    rim_pos pa = {{-db, ab - db},
-                  {prox_v3_norm2(g->dxb) * aa * iab, prox_v3_norm2(prox_v3_sub(n, g->dxb)) * aa * iab}};
-    /* pb is needed only when rB <= rA, yet computing it inside that branch measured 6-7 ns slower
-     * per overlapping pair (gcc 12 -O3): it is computed up front on purpose. */
-    rim_pos pb = {{da, da + ab},
-                  {prox_v3_norm2(g->dxa) * bb * iab, prox_v3_norm2(prox_v3_sub(g->dxa, n)) * bb * iab}};
-    int ain = nested_raw(A, B, &pa, ra * ra * nn * bb * iab, L2, cos2, prox_v3_neg(d));
-    /* a rim wider than the other cylinder cannot fit in it (nested_raw): the early-resolving test */
-    int bin = rb <= ra && !ain ? nested_raw(B, A, &pb, rb * rb * nn * aa * iab, L2, cos2, d) : 0;
-    prox_vec3 x = ain   ? prox_v3_mad(A->base, 0.5, a)
-                  : bin ? prox_v3_mad(B->base, 0.5, b)
-                        : between_axes(prox_v3_mad(A->base, g->sn * inv * inv, a),
-                                       prox_v3_scale(n, g->dn < 0.0 ? -inv : inv), L, ra, rb);
+    rim_pos pa = {{-db, ab - db}, {prox_v3_norm2(g->dxb), prox_v3_norm2(prox_v3_sub(n, g->dxb))}};
+    rim_pos pb = {{da, da + ab}, {prox_v3_norm2(g->dxa), prox_v3_norm2(prox_v3_sub(g->dxa, n))}};
+    axes2 ga = {g->aa, g->bb, g->nn, ab * ab, g->dn * g->dn}, gb = {g->bb, g->aa, g->nn, ab * ab, ga.dn2};
+    int ain = nested_raw(A, B, &pa, &ga, prox_v3_neg(d));
+    int bin = rb <= ra && nested_raw(B, A, &pb, &gb, d);
+    double i2 = 1.0 / g->nn;
+    prox_vec3 mid = between_axes(prox_v3_mad(A->base, g->sn * i2, a),
+                                 prox_v3_mad(B->base, g->tn * i2, b), ra, rb);
+    double wa = ain, wb = (!ain) & bin, wm = (!ain) & (!bin);
+    prox_vec3 x = prox_v3_add(prox_v3_add(prox_v3_scale(prox_v3_mad(A->base, 0.5, a), wa),
+                                          prox_v3_scale(prox_v3_mad(B->base, 0.5, b), wb)),
+                              prox_v3_scale(mid, wm));
     *res = (prox_rcc_result){.status = PROX_OK,
                              .distance = 0.0,
                              .p1 = x,
@@ -978,16 +993,17 @@ static RCC_NOINLINE void case1_overlap(const prox_rcc *A, const prox_rcc *B, con
  * minimum (the infinite solid cylinders are L - rA - rB apart and contain the finite ones,
  * docs/errata.md 8).  Overlapping: case1_overlap.
  * Returns 1 when answered, 0 for the general path: axes within 1e-3 rad of parallel (ill-conditioned
- * feet), not Case 1, or squared lengths (axes, radii, base offset) outside [1e-60, 1e60] (so
- * that the products of four lengths below neither overflow nor lose precision to underflow).  One
- * square root and one division for a disjoint pair, one more division for an overlapping one. */
+ * feet), not Case 1, or squared lengths (axes, radii, base offset) outside [1e-40, 1e40] (so that
+ * the products of up to six squared lengths in nested_raw neither overflow nor lose precision to
+ * underflow).  A disjoint pair costs one square root and one division, an overlapping one a
+ * division and no root. */
 static int case1_raw(const prox_rcc *A, const prox_rcc *B, double aa, double bb,
                      prox_rcc_result *res)
 {
     prox_vec3 a = A->axis, b = B->axis, d = prox_v3_sub(B->base, A->base);
     double ra2 = A->radius * A->radius, rb2 = B->radius * B->radius;
-    if (!(aa >= 1e-60 && aa <= 1e60 && bb >= 1e-60 && bb <= 1e60 && prox_v3_norm2(d) <= 1e60 &&
-          ra2 >= 1e-60 && ra2 <= 1e60 && rb2 >= 1e-60 && rb2 <= 1e60))
+    if (!(aa >= 1e-40 && aa <= 1e40 && bb >= 1e-40 && bb <= 1e40 && prox_v3_norm2(d) <= 1e40 &&
+          ra2 >= 1e-40 && ra2 <= 1e40 && rb2 >= 1e-40 && rb2 <= 1e40))
         return 0;
     prox_vec3 n = prox_v3_cross(a, b), dxb = prox_v3_cross(d, b), dxa = prox_v3_cross(d, a);
     double nn = prox_v3_norm2(n);
@@ -998,15 +1014,14 @@ static int case1_raw(const prox_rcc *A, const prox_rcc *B, double aa, double bb,
      * mispredicts often, and resolving it early wastes less (the axes are |d.n| / |n| apart). */
     double dn = prox_v3_dot(d, n), ra = A->radius, rb = B->radius, rr = ra + rb;
     if (dn * dn > rr * rr * nn) {
-        double inv = 1.0 / sqrt(nn), L = fabs(dn) * inv;
-        double s = sn * inv * inv, t = tn * inv * inv;
+        double inv = 1.0 / sqrt(nn), i2 = inv * inv, L = fabs(dn) * inv;
         prox_vec3 v = prox_v3_scale(n, dn < 0.0 ? -inv : inv);
         if (L > rr) { /* (as the two roundings agree) */
             /* each point from its own foot: on its surface to rounding */
             *res = (prox_rcc_result){.status = PROX_OK,
                                      .distance = L - rr,
-                                     .p1 = prox_v3_mad(prox_v3_mad(A->base, s, a), ra, v),
-                                     .p2 = prox_v3_mad(prox_v3_mad(B->base, t, b), -rb, v),
+                                     .p1 = prox_v3_mad(prox_v3_mad(A->base, sn * i2, a), ra, v),
+                                     .p2 = prox_v3_mad(prox_v3_mad(B->base, tn * i2, b), -rb, v),
                                      .pair = PROX_PAIR_SS,
                                      .feature1 = PROX_FEAT_LATERAL,
                                      .feature2 = PROX_FEAT_LATERAL,
@@ -1016,7 +1031,7 @@ static int case1_raw(const prox_rcc *A, const prox_rcc *B, double aa, double bb,
             return 1;
         }
     }
-    case1_geom g = {d, n, dxa, dxb, aa, bb, nn, sn, dn};
+    case1_geom g = {d, n, dxa, dxb, aa, bb, nn, sn, tn, dn};
     case1_overlap(A, B, &g, res);
     return 1;
 }
