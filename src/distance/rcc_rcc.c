@@ -955,8 +955,8 @@ typedef struct case1_geom {
  * L rB / (rA + rB) <= rB from B's, so in both (no root).  The three points are blended with 0/1
  * weights (exact) rather than chosen by a branch: nested or not is a coin toss in a mixture.  Out
  * of line, so that the disjoint path stays lean. */
-static RCC_NOINLINE void case1_overlap(const prox_rcc *A, const prox_rcc *B, const case1_geom *g,
-                                       prox_rcc_result *res)
+static RCC_NOINLINE prox_rcc_result case1_overlap(const prox_rcc *A, const prox_rcc *B,
+                                                  const case1_geom *g)
 {
     prox_vec3 a = A->axis, b = B->axis, d = g->d, n = g->n;
     double ra = A->radius, rb = B->radius, ab = prox_v3_dot(a, b);
@@ -973,7 +973,7 @@ static RCC_NOINLINE void case1_overlap(const prox_rcc *A, const prox_rcc *B, con
     prox_vec3 x = prox_v3_add(prox_v3_add(prox_v3_scale(prox_v3_mad(A->base, 0.5, a), wa),
                                           prox_v3_scale(prox_v3_mad(B->base, 0.5, b), wb)),
                               prox_v3_scale(mid, wm));
-    *res = (prox_rcc_result){.status = PROX_OK,
+    return (prox_rcc_result){.status = PROX_OK,
                              .distance = 0.0,
                              .p1 = x,
                              .p2 = x,
@@ -992,24 +992,26 @@ static RCC_NOINLINE void case1_overlap(const prox_rcc *A, const prox_rcc *B, con
  * and the axes L = |d.n|/|n| apart.  Disjoint: the S-S pair along the unit common normal is the
  * minimum (the infinite solid cylinders are L - rA - rB apart and contain the finite ones,
  * docs/errata.md 8).  Overlapping: case1_overlap.
- * Returns 1 when answered, 0 for the general path: axes within 1e-3 rad of parallel (ill-conditioned
+ * Hands to the general path (rcc_general): axes within 1e-3 rad of parallel (ill-conditioned
  * feet), not Case 1, or squared lengths (axes, radii, base offset) outside [1e-40, 1e40] (so that
  * the products of up to six squared lengths in nested_raw neither overflow nor lose precision to
  * underflow).  A disjoint pair costs one square root and one division, an overlapping one a
- * division and no root. */
-static int case1_raw(const prox_rcc *A, const prox_rcc *B, double aa, double bb,
-                     prox_rcc_result *res)
+ * division and no root.  Every path returns its result as a tail expression, so the result is built
+ * in the caller's return slot and never copied. */
+static RCC_NOINLINE prox_rcc_result rcc_general(const prox_rcc *a, const prox_rcc *b, double ha2,
+                                                double hb2);
+static prox_rcc_result case1_raw(const prox_rcc *A, const prox_rcc *B, double aa, double bb)
 {
     prox_vec3 a = A->axis, b = B->axis, d = prox_v3_sub(B->base, A->base);
     double ra2 = A->radius * A->radius, rb2 = B->radius * B->radius;
     if (!(aa >= 1e-40 && aa <= 1e40 && bb >= 1e-40 && bb <= 1e40 && prox_v3_norm2(d) <= 1e40 &&
           ra2 >= 1e-40 && ra2 <= 1e40 && rb2 >= 1e-40 && rb2 <= 1e40))
-        return 0;
+        return rcc_general(A, B, aa, bb);
     prox_vec3 n = prox_v3_cross(a, b), dxb = prox_v3_cross(d, b), dxa = prox_v3_cross(d, a);
     double nn = prox_v3_norm2(n);
-    if (!(nn >= 1e-6 * aa * bb)) return 0;
+    if (!(nn >= 1e-6 * aa * bb)) return rcc_general(A, B, aa, bb);
     double sn = prox_v3_dot(dxb, n), tn = prox_v3_dot(dxa, n);
-    if (!(sn >= 0.0 && sn <= nn && tn >= 0.0 && tn <= nn)) return 0;
+    if (!(sn >= 0.0 && sn <= nn && tn >= 0.0 && tn <= nn)) return rcc_general(A, B, aa, bb);
     /* Disjoint or not, decided from squares before the root: in a mixture of both the branch
      * mispredicts often, and resolving it early wastes less (the axes are |d.n| / |n| apart). */
     double dn = prox_v3_dot(d, n), ra = A->radius, rb = B->radius, rr = ra + rb;
@@ -1018,7 +1020,7 @@ static int case1_raw(const prox_rcc *A, const prox_rcc *B, double aa, double bb,
         prox_vec3 v = prox_v3_scale(n, dn < 0.0 ? -inv : inv);
         if (L > rr) { /* (as the two roundings agree) */
             /* each point from its own foot: on its surface to rounding */
-            *res = (prox_rcc_result){.status = PROX_OK,
+            return (prox_rcc_result){.status = PROX_OK,
                                      .distance = L - rr,
                                      .p1 = prox_v3_mad(prox_v3_mad(A->base, sn * i2, a), ra, v),
                                      .p2 = prox_v3_mad(prox_v3_mad(B->base, tn * i2, b), -rb, v),
@@ -1028,17 +1030,15 @@ static int case1_raw(const prox_rcc *A, const prox_rcc *B, double aa, double bb,
                                      .agarwal = PROX_CASE_1,
                                      .hierarchy_exact = 1,
                                      .certificate_gap = L - rr};
-            return 1;
         }
     }
     case1_geom g = {d, n, dxa, dxb, aa, bb, nn, sn, tn, dn};
-    case1_overlap(A, B, &g, res);
-    return 1;
+    return case1_overlap(A, B, &g);
 }
 
 /* Steps 1-6 for every pair that case1_raw does not answer (validated; squared heights ha2, hb2).
  * Kept out of line: its large query state would otherwise burden the Case 1 path's frame. */
-static RCC_NOINLINE prox_rcc_result rcc_general(const prox_rcc *a, const prox_rcc *b, double ha2,
+static prox_rcc_result rcc_general(const prox_rcc *a, const prox_rcc *b, double ha2,
                                                 double hb2)
 {
     prox_rcc_result res = {0};
@@ -1076,11 +1076,9 @@ static RCC_NOINLINE prox_rcc_result rcc_general(const prox_rcc *a, const prox_rc
 
 PROX_API prox_rcc_result prox_rcc_distance(const prox_rcc *a, const prox_rcc *b)
 {
-    prox_rcc_result res; /* the one returned object on every path: filled in place */
     double ha2, hb2;
     prox_status st = prox_rcc_validate_h2(a, &ha2);
     if (st == PROX_OK) st = prox_rcc_validate_h2(b, &hb2);
-    if (st != PROX_OK) res = (prox_rcc_result){.status = st};
-    else if (!case1_raw(a, b, ha2, hb2, &res)) res = rcc_general(a, b, ha2, hb2);
-    return res;
+    if (st != PROX_OK) return (prox_rcc_result){.status = st};
+    return case1_raw(a, b, ha2, hb2); /* built in the return slot (tail expressions throughout) */
 }
