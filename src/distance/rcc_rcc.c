@@ -40,10 +40,15 @@
 #include "prox/distance.h"
 #include "prox/sat.h"
 
+/* RCC_OPAQUE(v): hides how an int was computed from the optimiser, so that a branch on it stays one
+ * branch (gcc otherwise splits a test of yes | no into branches on yes and on no, which are coin
+ * tosses where yes | no is not). */
 #if defined(__GNUC__) || defined(__clang__)
 #define RCC_NOINLINE __attribute__((noinline))
+#define RCC_OPAQUE(v) __asm__("" : "+r"(v))
 #else
 #define RCC_NOINLINE
+#define RCC_OPAQUE(v) ((void)0)
 #endif
 
 /* A cylinder prepared for the query (coordinates relative to the query origin). */
@@ -926,18 +931,20 @@ typedef struct axes2 {
 static int nested_raw(const prox_rcc *in, const prox_rcc *out, const rim_pos *p, const axes2 *g,
                       prox_vec3 c0)
 {
-    double ri2 = in->radius * in->radius, ro2 = out->radius * out->radius;
-    double lo = p->t[0] < p->t[1] ? p->t[0] : p->t[1];
-    double rest = g->oo - (p->t[0] < p->t[1] ? p->t[1] : p->t[0]), h2 = ri2 * g->nn;
-    int yes = (lo >= 0.0) & (rest >= 0.0) & (g->ii * lo * lo >= h2) & (g->ii * rest * rest >= h2);
-    int no = !yes;
+    double ri2 = in->radius * in->radius, ro2 = out->radius * out->radius, h2 = ri2 * g->nn;
     double in_l = 4.0 * ri2 * g->oo * g->dn2, out_l = in_l * g->oo, sl = (ro2 - ri2) * g->oo;
-    for (int k = 0; k < 2; ++k) {
-        double G = sl - p->x2[k], G2 = G * G;
-        yes &= (G >= 0.0) & (in_l + 4.0 * ri2 * g->io2 * p->x2[k] <= g->ii * G2);
-        no |= (G < 0.0) | (out_l > g->nn * G2);
+    int yes = 1, no = 0;
+    for (int k = 0; k < 2; ++k) { /* each rim on its own: no min / max, which compile to branches */
+        double t = p->t[k], rest = g->oo - t, G = sl - p->x2[k], G2 = G * G;
+        int ax = (t >= 0.0) & (rest >= 0.0) & (g->ii * t * t >= h2) & (g->ii * rest * rest >= h2);
+        yes &= ax & (G >= 0.0) & (in_l + 4.0 * ri2 * g->io2 * p->x2[k] <= g->ii * G2);
+        no |= (!ax) | (G < 0.0) | (out_l > g->nn * G2);
     }
-    return yes | no ? yes : nested_exact(in, out, c0);
+    /* one branch, on whether the bounds decide (almost always): a branch on yes itself would be a
+     * coin toss in a mixture of nested and crossing pairs */
+    int decided = yes | no;
+    RCC_OPAQUE(decided);
+    return decided ? yes : nested_exact(in, out, c0);
 }
 
 /* What case1_raw hands to case1_overlap: d = bB - bA, n = a x b, d x a, d x b, |a|^2, |b|^2,
@@ -952,9 +959,10 @@ typedef struct case1_geom {
  * rB <= rA (a wider rim cannot fit).  The common point: the middle of the inner cylinder's axis
  * when nested, else the point dividing the common perpendicular of the axes (feet f1, f2, length
  * L <= rA + rB) in the ratio rA : rB, which is L rA / (rA + rB) <= rA from A's axis and
- * L rB / (rA + rB) <= rB from B's, so in both (no root).  The three points are blended with 0/1
- * weights (exact) rather than chosen by a branch: nested or not is a coin toss in a mixture.  Out
- * of line, so that the disjoint path stays lean. */
+ * L rB / (rA + rB) <= rB from B's, so in both (no root).  No branch depends on whether the pair is
+ * nested (a coin toss in a mixture, which cost 7-8 ns per pair in mispredictions): nested_raw
+ * branches only on whether its bounds decide, and the point is picked by an index.  Out of line,
+ * so that the disjoint path stays lean. */
 static RCC_NOINLINE prox_rcc_result case1_overlap(const prox_rcc *A, const prox_rcc *B,
                                                   const case1_geom *g)
 {
@@ -965,14 +973,13 @@ static RCC_NOINLINE prox_rcc_result case1_overlap(const prox_rcc *A, const prox_
     rim_pos pb = {{da, da + ab}, {prox_v3_norm2(g->dxa), prox_v3_norm2(prox_v3_sub(g->dxa, n))}};
     axes2 ga = {g->aa, g->bb, g->nn, ab * ab, g->dn * g->dn}, gb = {g->bb, g->aa, g->nn, ab * ab, ga.dn2};
     int ain = nested_raw(A, B, &pa, &ga, prox_v3_neg(d));
-    int bin = rb <= ra && nested_raw(B, A, &pb, &gb, d);
+    int bin = rb <= ra && nested_raw(B, A, &pb, &gb, d); /* rarely tried: a predictable branch */
     double i2 = 1.0 / g->nn;
     prox_vec3 mid = between_axes(prox_v3_mad(A->base, g->sn * i2, a),
                                  prox_v3_mad(B->base, g->tn * i2, b), ra, rb);
-    double wa = ain, wb = (!ain) & bin, wm = (!ain) & (!bin);
-    prox_vec3 x = prox_v3_add(prox_v3_add(prox_v3_scale(prox_v3_mad(A->base, 0.5, a), wa),
-                                          prox_v3_scale(prox_v3_mad(B->base, 0.5, b), wb)),
-                              prox_v3_scale(mid, wm));
+    /* chosen by an index, not a branch: nested or not is a coin toss in a mixture */
+    const prox_vec3 pts[3] = {mid, prox_v3_mad(B->base, 0.5, b), prox_v3_mad(A->base, 0.5, a)};
+    prox_vec3 x = pts[(bin & !ain) + 2 * ain];
     return (prox_rcc_result){.status = PROX_OK,
                              .distance = 0.0,
                              .p1 = x,
