@@ -999,10 +999,8 @@ static RCC_NOINLINE prox_rcc_result case1_overlap(const prox_rcc *A, const prox_
  * and the axes L = |d.n|/|n| apart.  Disjoint: the S-S pair along the unit common normal is the
  * minimum (the infinite solid cylinders are L - rA - rB apart and contain the finite ones,
  * docs/errata.md 8).  Overlapping: case1_overlap.
- * Hands to the general path (rcc_general): axes within 1e-3 rad of parallel (ill-conditioned
- * feet), not Case 1, or squared lengths (axes, radii, base offset) outside [1e-40, 1e40] (so that
- * the products of up to six squared lengths in nested_raw neither overflow nor lose precision to
- * underflow).  A disjoint pair costs one square root and one division, an overlapping one a
+ * Takes pairs inside raw_window; hands to the general path (rcc_general) axes within 1e-3 rad of
+ * parallel (ill-conditioned feet) and pairs that are not Case 1.  A disjoint pair costs one square root and one division, an overlapping one a
  * division and no root.  Every path returns its result as a tail expression, so the result is built
  * in the caller's return slot and never copied. */
 static RCC_NOINLINE prox_rcc_result rcc_general(const prox_rcc *a, const prox_rcc *b, double ha2,
@@ -1010,10 +1008,6 @@ static RCC_NOINLINE prox_rcc_result rcc_general(const prox_rcc *a, const prox_rc
 static prox_rcc_result case1_raw(const prox_rcc *A, const prox_rcc *B, double aa, double bb)
 {
     prox_vec3 a = A->axis, b = B->axis, d = prox_v3_sub(B->base, A->base);
-    double ra2 = A->radius * A->radius, rb2 = B->radius * B->radius;
-    if (!(aa >= 1e-40 && aa <= 1e40 && bb >= 1e-40 && bb <= 1e40 && prox_v3_norm2(d) <= 1e40 &&
-          ra2 >= 1e-40 && ra2 <= 1e40 && rb2 >= 1e-40 && rb2 <= 1e40))
-        return rcc_general(A, B, aa, bb);
     prox_vec3 n = prox_v3_cross(a, b), dxb = prox_v3_cross(d, b), dxa = prox_v3_cross(d, a);
     double nn = prox_v3_norm2(n);
     if (!(nn >= 1e-6 * aa * bb)) return rcc_general(A, B, aa, bb);
@@ -1081,11 +1075,30 @@ static prox_rcc_result rcc_general(const prox_rcc *a, const prox_rcc *b, double 
     return res;
 }
 
+/* Whether a pair lies in the window of case1_raw, which also makes it valid (prox_rcc_validate):
+ * base coordinates within PROX_MAX_COORD, squared axis lengths in [1e-40, 1e40] (finite and
+ * nonzero), radii in [1e-20, 1e20] (positive) and the bases at most 1e20 apart, so that the products
+ * of up to six squared lengths in nested_raw neither overflow nor lose precision to underflow.
+ * NaNs fail every comparison.  One pass without branches; *aa, *bb: the squared axis lengths. */
+static int raw_window(const prox_rcc *A, const prox_rcc *B, double *aa, double *bb)
+{
+    const double M = PROX_MAX_COORD;
+    prox_vec3 p = A->base, q = B->base;
+    double a2 = prox_v3_norm2(A->axis), b2 = prox_v3_norm2(B->axis), ra = A->radius, rb = B->radius;
+    int ok = (fabs(p.x) <= M) & (fabs(p.y) <= M) & (fabs(p.z) <= M) & (fabs(q.x) <= M) &
+             (fabs(q.y) <= M) & (fabs(q.z) <= M) & (a2 >= 1e-40) & (a2 <= 1e40) & (b2 >= 1e-40) &
+             (b2 <= 1e40) & (ra >= 1e-20) & (ra <= 1e20) & (rb >= 1e-20) & (rb <= 1e20) &
+             (prox_v3_norm2(prox_v3_sub(q, p)) <= 1e40);
+    *aa = a2, *bb = b2;
+    return ok;
+}
+
 PROX_API prox_rcc_result prox_rcc_distance(const prox_rcc *a, const prox_rcc *b)
 {
     double ha2, hb2;
+    if (a && b && raw_window(a, b, &ha2, &hb2)) return case1_raw(a, b, ha2, hb2);
     prox_status st = prox_rcc_validate_h2(a, &ha2);
     if (st == PROX_OK) st = prox_rcc_validate_h2(b, &hb2);
     if (st != PROX_OK) return (prox_rcc_result){.status = st};
-    return case1_raw(a, b, ha2, hb2); /* built in the return slot (tail expressions throughout) */
+    return rcc_general(a, b, ha2, hb2); /* valid, outside the window */
 }
