@@ -392,6 +392,50 @@ static void test_rcc_bad_input(void **state)
     assert_int_equal(prox_rcc_distance(NULL, &a).status, PROX_EINVAL_ARG);
 }
 
+/* Every fault in either argument of a crossing (Case 1) pair, the pairs the raw path's window
+ * admits without calling the validators: the window must turn each away to the validator's code,
+ * and valid pairs just outside the window (tiny radii, far bases) must still be answered. */
+static void test_rcc_bad_input_case1_window(void **state)
+{
+    (void)state;
+    const prox_rcc a = {prox_v3(0, 0, -2), prox_v3(0, 0, 4), 1};
+    const prox_rcc good = {prox_v3(-2, 3, 0), prox_v3(4, 0, 0), 0.5};
+    assert_int_equal(prox_rcc_distance(&a, &good).status, PROX_OK);
+    struct {
+        prox_rcc b;
+        prox_status want;
+    } bad[] = {
+        {{prox_v3(-2, 3, 2e100), prox_v3(4, 0, 0), 0.5}, PROX_EINVAL_RANGE},
+        {{prox_v3(-2, 3, 0), prox_v3(4, 0, 0), 0.0}, PROX_EINVAL_RADIUS},
+        {{prox_v3(-2, 3, 0), prox_v3(4, 0, 0), -0.5}, PROX_EINVAL_RADIUS},
+        {{prox_v3(-2, 3, 0), prox_v3(4, 0, 0), 2e100}, PROX_EINVAL_RANGE},
+        {{prox_v3(-2, 3, 0), prox_v3(4, 0, 0), 1e-101}, PROX_EINVAL_RANGE},
+        {{prox_v3(-2, 3, 0), prox_v3(INFINITY, 0, 0), 0.5}, PROX_EINVAL_NONFINITE},
+        {{prox_v3(-2, 3, 0), prox_v3(1e-150, 0, 0), 0.5}, PROX_EINVAL_RANGE},
+        {{prox_v3(-2, 3, 0), prox_v3(0, 0, 0), 0.5}, PROX_EINVAL_AXIS},
+        {{prox_v3(-2, NAN, 0), prox_v3(4, 0, 0), 0.5}, PROX_EINVAL_NONFINITE},
+        {{prox_v3(-2, 3, 0), prox_v3(4, 0, 0), NAN}, PROX_EINVAL_NONFINITE},
+    };
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
+        prox_rcc_result r1 = prox_rcc_distance(&a, &bad[k].b), r2 = prox_rcc_distance(&bad[k].b, &a);
+        if (r1.status != bad[k].want || r2.status != bad[k].want)
+            print_error("fault %zu: status %d / %d, want %d\n", k, r1.status, r2.status, bad[k].want);
+        assert_int_equal(r1.status, bad[k].want);
+        assert_int_equal(r2.status, bad[k].want);
+    }
+    /* valid, outside the window: radii 1e-30 (squared below 1e-40), bases 1e30 apart */
+    const double f = 1e-30;
+    prox_rcc as = {prox_v3_scale(a.base, f), prox_v3_scale(a.axis, f), a.radius * f};
+    prox_rcc gs = {prox_v3_scale(good.base, f), prox_v3_scale(good.axis, f), good.radius * f};
+    prox_rcc_result r = prox_rcc_distance(&as, &gs), r0 = prox_rcc_distance(&a, &good);
+    assert_int_equal(r.status, PROX_OK);
+    assert_near(r.distance / f, r0.distance, 1e-12 * 4.0);
+    prox_rcc far = {prox_v3(1e30, 3, 0), prox_v3(4, 0, 0), 0.5};
+    r = prox_rcc_distance(&a, &far);
+    assert_int_equal(r.status, PROX_OK);
+    assert_near(r.distance / 1e30, 1.0, 1e-12);
+}
+
 int main(void)
 {
     test_init();
@@ -408,6 +452,7 @@ int main(void)
         cmocka_unit_test(test_rcc_regress_needle_through_disk),
         cmocka_unit_test(test_rcc_regress_unverified_witness),
         cmocka_unit_test(test_rcc_bad_input),
+        cmocka_unit_test(test_rcc_bad_input_case1_window),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
