@@ -4,10 +4,12 @@
  * right-circular cylinders in space", J. Mech. Robot. 8 (2016), Sec. 2 (Figs. 3-5) and Sec. 3.
  *
  * How a query flows (docs/design.md has the long version):
- *  1. Both cylinders are validated (no root).  Case 1 with well-conditioned feet is decided at once
- *     from the raw input (case1_raw, Agarwal's first level for that case): the infinite solid
- *     cylinders are L - rA - rB apart and contain the finite ones, so the S-S pair is the minimum;
- *     overlapping Case-1 pairs get their common point and root-free nesting bounds there too.
+ *  1. One branch-free test (raw_window) admits both cylinders to the raw path; every pair it admits
+ *     is valid, the others go through the validators.  Case 1 with well-conditioned feet is decided
+ *     at once from the raw input (case1_raw, Agarwal's first level for that case): the infinite
+ *     solid cylinders are L - rA - rB apart and contain the finite ones, so the S-S pair is the
+ *     minimum; overlapping Case-1 pairs get their common point and root-free, division-free nesting
+ *     bounds there too.
  *     Every other pair is prepared (rims only when needed) in a frame centred on A's centre, so that
  *     pairs far from the origin keep their relative precision.
  *  2. Agarwal's first level: P(S1,S2) from the common perpendicular of the axes gives the case
