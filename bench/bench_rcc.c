@@ -56,16 +56,21 @@ static void add_distance_classes(const bench_opts *o, const bench_pairs *P, cons
 {
     if (!bench_selected(o, "rcc/prox-distance/agarwal/")) return;
     size_t ncase = sizeof k_cases / sizeof k_cases[0];
-    subset cs[5], ps[NPAIR];
+    subset cs[5], ps[NPAIR], c1[3];
     size_t cnt[5][2] = {{0}}, nnear = 0;
     for (size_t k = 0; k < ncase; ++k) cs[k] = subset_alloc(P->n);
     for (size_t k = 0; k < NPAIR; ++k) ps[k] = subset_alloc(P->n);
+    for (size_t k = 0; k < 3; ++k) c1[k] = subset_alloc(P->n);
     for (size_t i = 0; i < P->n; ++i) {
         prox_rcc_result r = prox_rcc_distance(&P->a[i], &P->b[i]);
         nnear += (size_t)is_near[i];
         for (size_t k = 0; k < ncase; ++k)
             if ((int)r.agarwal == k_cases[k].code) cs[k].idx[cs[k].n++] = i, ++cnt[k][is_near[i] ? 0 : 1];
         if ((unsigned)r.pair < NPAIR) ps[r.pair].idx[ps[r.pair].n++] = i;
+        if (r.agarwal == PROX_CASE_1) {
+            subset *c = &c1[!r.interfere ? 0 : (r.a_in_b || r.b_in_a) ? 2 : 1];
+            c->idx[c->n++] = i;
+        }
     }
     char sfx[64];
     for (size_t k = 0; k < ncase; ++k) {
@@ -74,6 +79,16 @@ static void add_distance_classes(const bench_opts *o, const bench_pairs *P, cons
         bench_note(c, "share_all=%.2f%%;share_near=%.2f%%;share_far=%.2f%%", 100.0 * (double)cs[k].n / (double)P->n,
                    100.0 * (double)cnt[k][0] / (double)nnear, 100.0 * (double)cnt[k][1] / (double)(P->n - nnear));
     }
+    /* Case 1 by class (disjoint, crossing, nested), each alone, then all three one class after the
+     * other: against the case1 figure (the classes interleaved as drawn), the difference is the
+     * cost of branches that the mixture makes unpredictable. */
+    static const char *const c1_names[3] = {"/case1-disjoint", "/case1-crossing", "/case1-nested"};
+    subset sorted = subset_alloc(P->n);
+    for (size_t k = 0; k < 3; ++k) {
+        bench_add_method("rcc", &bench_prox_distance_method, P, c1[k].idx, c1[k].n, c1_names[k]);
+        for (size_t j = 0; j < c1[k].n; ++j) sorted.idx[sorted.n++] = c1[k].idx[j];
+    }
+    bench_add_method("rcc", &bench_prox_distance_method, P, sorted.idx, sorted.n, "/case1-by-class");
     for (size_t k = 0; k < NPAIR; ++k) {
         if (!ps[k].n) continue;
         snprintf(sfx, sizeof sfx, "/pair-%s", k_pairs[k]);
