@@ -137,6 +137,17 @@ static void test_rcc_random_containment(void **state)
     assert_int_equal(t.bad, 0);
 }
 
+/* A cylinder (axis wa, height ha, radius ra) whose axis crosses the common normal of its axis and
+ * big's (unit axis w) at its fraction s / ha, L from big's axis at big's axial coordinate t: an
+ * overlapping Case-1 pair with big when 0 <= t <= |big axis|, 0 <= s <= ha and L < the radii's sum. */
+static prox_rcc case1_partner(const prox_rcc *big, prox_vec3 w, prox_vec3 wa, double t, double s,
+                              double L, double ha, double ra)
+{
+    prox_vec3 nrm = prox_v3_normalize(prox_v3_cross(wa, w));
+    prox_vec3 foot = prox_v3_mad(prox_v3_mad(big->base, t, w), L, nrm);
+    return (prox_rcc){prox_v3_mad(foot, -s, wa), prox_v3_scale(wa, ha), ra};
+}
+
 /* Nesting flags of overlapping Case-1 pairs (the feet of the common perpendicular on both axes, which
  * prox decides before any preparation, with bounds on the farthest point of each rim) against the
  * brute force.  The small cylinder's foot is put less than rb from the big one's along the common
@@ -155,10 +166,8 @@ static void test_rcc_case1_nesting(void **state)
         prox_vec3 wa = sg_u(&r) < 0.2 ? sg_tilt(&r, w, sg_log(&r, 2e-3, 0.2)) : sg_unit(&r);
         double ra = rb * sg_log(&r, 0.02, 1.2), ha = hb * sg_log(&r, 0.02, 1.2);
         double t = hb * sg_u(&r), s = ha * sg_u(&r), L = rb * sg_u(&r);
-        prox_vec3 nrm = prox_v3_normalize(prox_v3_cross(wa, w));
         prox_rcc big = {prox_v3_scale(sg_unit(&r), 10.0 * sg_u(&r)), prox_v3_scale(w, hb), rb};
-        prox_vec3 foot = prox_v3_mad(prox_v3_mad(big.base, t, w), L, nrm);
-        prox_rcc small = {prox_v3_mad(foot, -s, wa), prox_v3_scale(wa, ha), ra};
+        prox_rcc small = case1_partner(&big, w, wa, t, s, L, ha, ra);
         prox_rcc_result d2, d1 = check_nesting(i, &small, &big, &tally, &d2);
         assert_true(d1.interfere && d2.interfere && d1.distance == 0.0 && d2.distance == 0.0);
         case1 += d1.agarwal == PROX_CASE_1;
@@ -190,10 +199,8 @@ static void test_rcc_case1_nesting_boundary(void **state)
         prox_vec3 wa = sg_u(&r) < 0.3 ? sg_tilt(&r, w, sg_log(&r, 2e-3, 0.3)) : sg_unit(&r);
         double hb = 4.0 * (ha + 2.0 * ra) * (1.0 + sg_u(&r)), t = hb * (0.4 + 0.2 * sg_u(&r));
         double s = ha * sg_u(&r), L = ra * sg_u(&r);
-        prox_vec3 nrm = prox_v3_normalize(prox_v3_cross(wa, w));
         prox_rcc big = {prox_v3_scale(sg_unit(&r), 10.0 * sg_u(&r)), prox_v3_scale(w, hb), 1.0};
-        prox_vec3 foot = prox_v3_mad(prox_v3_mad(big.base, t, w), L, nrm);
-        prox_rcc small = {prox_v3_mad(foot, -s, wa), prox_v3_scale(wa, ha), ra};
+        prox_rcc small = case1_partner(&big, w, wa, t, s, L, ha, ra);
         long double m0 = tb_circle_line_max_dist(small.base, wa, ra, big.base, w);
         long double m1 = tb_circle_line_max_dist(prox_v3_add(small.base, small.axis), wa, ra, big.base, w);
         double delta = sg_log(&r, 1e-8, 1e-2) * (sg_u(&r) < 0.5 ? -1.0 : 1.0);
@@ -226,10 +233,8 @@ static void test_rcc_case1_extreme_scale(void **state)
         double ra = rb * sg_log(&r, 0.02, 1.2), ha = hb * sg_log(&r, 0.02, 1.2);
         double t = hb * sg_u(&r), s = ha * sg_u(&r);
         double L = (rb + ra) * 1.5 * sg_u(&r); /* a third disjoint */
-        prox_vec3 nrm = prox_v3_normalize(prox_v3_cross(wa, w));
         prox_rcc b = {prox_v3_scale(sg_unit(&r), 10.0 * sg_u(&r)), prox_v3_scale(w, hb), rb};
-        prox_vec3 foot = prox_v3_mad(prox_v3_mad(b.base, t, w), L, nrm);
-        prox_rcc a = {prox_v3_mad(foot, -s, wa), prox_v3_scale(wa, ha), ra};
+        prox_rcc a = case1_partner(&b, w, wa, t, s, L, ha, ra);
         prox_rcc_result d = prox_rcc_distance(&a, &b);
         for (int k = 0; k < 2; ++k) {
             double f = scales[k];
