@@ -256,6 +256,51 @@ static void test_rcc_case1_extreme_scale(void **state)
     assert_int_equal(bad, 0);
 }
 
+/* The general path's Case-1 answer against the raw path's, on pairs where the common perpendicular
+ * is short and the bases far apart (a small cylinder beside a long one): the pair scaled by 2^-80
+ * leaves the raw window and goes through the general path, and both must agree to 1e-12 S.  The
+ * general path's S-S normal used to come from alternating rejections, whose residual along B's axis
+ * times |(bB - bA).wB| put it up to 1.2e-11 S off, too far or too near (114 of these 20000 pairs);
+ * the first pair below is one from a broader draw, with its distance from a 40-digit evaluation. */
+static void test_rcc_case1_general_path(void **state)
+{
+    (void)state;
+    const double f = 0x1p-80;
+    const prox_rcc a0 = {prox_v3(-211.63087875421701, 38.10168802029176, -2.1881900526133413),
+                         prox_v3(0.0019564173377379008, 0.0022268015435515471, 0.00041154130474214257),
+                         0.0015693143744573345};
+    const prox_rcc b0 = {prox_v3(5.719400264752875, -5.2312468099571454, -0.29317120783543998),
+                         prox_v3(-227.13003164415474, 45.285832779171649, -1.9833439766186418),
+                         0.0010691091868932758};
+    prox_rcc as = {prox_v3_scale(a0.base, f), prox_v3_scale(a0.axis, f), a0.radius * f};
+    prox_rcc bs = {prox_v3_scale(b0.base, f), prox_v3_scale(b0.axis, f), b0.radius * f};
+    double S0 = prox_rcc_pair_scale(&a0, &b0);
+    assert_near(prox_rcc_distance(&as, &bs).distance / f, 0.00069747178450311992, 1e-12 * S0);
+    assert_near(prox_rcc_distance(&a0, &b0).distance, 0.00069747178450311992, 1e-12 * S0);
+    sg_rng r = sg_seed(6161);
+    int bad = 0, n = 20000;
+    double worst = 0.0;
+    for (int i = 0; i < n; ++i) {
+        double ra = sg_log(&r, 1e-3, 1.0), ha = sg_log(&r, 1e-3, 1.0);
+        double rb = sg_log(&r, 1e-3, 1.0), hb = sg_log(&r, 10.0, 1e3);
+        prox_vec3 w = sg_unit(&r), wa = sg_unit(&r);
+        double t = hb * sg_u(&r), s = ha * sg_u(&r), L = (ra + rb) * (1.0 + sg_log(&r, 1e-6, 1.0));
+        prox_rcc b = {prox_v3_scale(sg_unit(&r), 10.0 * sg_u(&r)), prox_v3_scale(w, hb), rb};
+        prox_rcc a = case1_partner(&b, w, wa, t, s, L, ha, ra);
+        prox_rcc_result d = prox_rcc_distance(&a, &b);
+        prox_rcc a2 = {prox_v3_scale(a.base, f), prox_v3_scale(a.axis, f), a.radius * f};
+        prox_rcc b2 = {prox_v3_scale(b.base, f), prox_v3_scale(b.axis, f), b.radius * f};
+        prox_rcc_result e = prox_rcc_distance(&a2, &b2);
+        double err = fabs(e.distance / f - d.distance) / prox_rcc_pair_scale(&a, &b);
+        worst = err > worst ? err : worst;
+        if (!(err <= 1e-12) && bad++ < 5)
+            print_error("pair %d: raw %.17g general %.17g (%.3g S)\n", i, d.distance, e.distance / f, err);
+    }
+    printf("# %d short-perpendicular Case-1 pairs, general path against raw: worst %.3g S, failures %d\n",
+           n, worst, bad);
+    assert_int_equal(bad, 0);
+}
+
 /* Extreme aspect ratios (radii and heights log-uniform over 1e-3 .. 1e3, the base of B up to 1e3
  * times A's size away): the verdict agrees with the certified SAT, disjoint distances with the
  * independent support-function method, and overlap witnesses lie in both solids. Session 1 reported
@@ -307,6 +352,7 @@ int main(void)
         cmocka_unit_test(test_rcc_case1_nesting),
         cmocka_unit_test(test_rcc_case1_nesting_boundary),
         cmocka_unit_test(test_rcc_case1_extreme_scale),
+        cmocka_unit_test(test_rcc_case1_general_path),
         cmocka_unit_test(test_rcc_random_extreme_aspect),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

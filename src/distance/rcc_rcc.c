@@ -207,11 +207,23 @@ static void cand_lat_lat(query *q, double s, double t)
         return;
     }
     u = prox_v3_scale(u, 1.0 / L);
+    if (q->nn >= 1e-6) {
+        /* Well-conditioned axes (the range of the Case-1 shortcut in search): the unit common normal
+         * from the cross product, whose residual along the axes is ~ eps / |wA x wB|, and each point
+         * from its own foot (the distance is then second order in the feet's errors), as in
+         * case1_raw.  The rejections below converge only by (wA.wB)^2 per pair; for a short common
+         * perpendicular between bases far apart, their residual times |(bB - bA).wB| left the
+         * distance up to 1.2e-11 S off (docs/errata.md, numerical pitfalls). */
+        prox_vec3 v = prox_v3_scale(q->nab, (prox_v3_dot(u, q->nab) < 0.0 ? -1.0 : 1.0) / sqrt(q->nn));
+        offer(q, prox_v3_mad(f1, q->A.r, v), prox_v3_mad(f2, -q->B.r, v), v, PROX_PAIR_SS,
+              PROX_FEAT_LATERAL, PROX_FEAT_LATERAL);
+        return;
+    }
     /* Near-parallel axes leave the feet inaccurate along the axes (error ~ eps S / |wA x wB|), and a
      * normal that is not perpendicular to an axis costs h |n.w| / 2 in the certificate.  So: the normal
      * made perpendicular to both axes to rounding (alternate rejections), the line distance measured
      * along it, and B's point put on that normal; used when it is a genuine point of B (its axial
-     * coordinate within B's height). */
+     * coordinate within B's height).  Here the search certifies the candidate like any other. */
     prox_vec3 v = prox_v3_reject(prox_v3_reject(prox_v3_reject(u, q->A.w), q->B.w), q->A.w);
     double vl = prox_v3_norm(v);
     if (vl > 0.5) {
