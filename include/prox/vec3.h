@@ -42,11 +42,12 @@ static inline prox_vec3 prox_v3_cross(prox_vec3 a, prox_vec3 b)
 /// |a|^2
 static inline double prox_v3_norm2(prox_vec3 a) { return prox_v3_dot(a, a); }
 /// |a|, overflow- and underflow-safe: sqrt of the sum of squares, with a hypot fallback only when
-/// that sum overflows or underflows (glibc's hypot costs ~20 ns, this path ~2 ns).
+/// that sum overflows or underflows and a is not zero (glibc's hypot costs ~20 ns, this path ~2 ns).
 static inline double prox_v3_norm(prox_vec3 a)
 {
     double s = a.x * a.x + a.y * a.y + a.z * a.z;
     if (s < 1e300 && s > 1e-300) return sqrt(s);
+    if (a.x == 0.0 && a.y == 0.0 && a.z == 0.0) return 0.0; /* common (a direction along an axis) */
     return hypot(hypot(a.x, a.y), a.z);
 }
 /// sqrt(x^2 + y^2) without glibc hypot's cost, falling back to it on overflow or underflow.
