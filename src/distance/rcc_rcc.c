@@ -939,7 +939,7 @@ typedef struct axes2 {
  * (the slack times |o|^2), the two tests clear their denominators to
  *     in:   G >= 0  and  4 r^2 (|o|^2 dn2 + (i.o)^2 X) <= |i|^2 G^2,
  *     out:  G < 0   or   4 r^2 |o|^4 dn2 > |n|^2 G^2:
- * no root and no division (products of up to six squared lengths: case1_raw bounds them).
+ * no root and no division (products of up to six squared lengths: raw_window bounds them).
  * p: the rim centres (rim_pos); c0: the base centre of `in` relative to out's base (for the exact
  * test only). */
 static int nested_raw(const prox_rcc *in, const prox_rcc *out, const rim_pos *p, const axes2 *g,
@@ -985,7 +985,8 @@ static RCC_NOINLINE prox_rcc_result case1_overlap(const prox_rcc *A, const prox_
     double da = prox_v3_dot(d, a), db = prox_v3_dot(d, b);
     rim_pos pa = {{-db, ab - db}, {prox_v3_norm2(g->dxb), prox_v3_norm2(prox_v3_sub(n, g->dxb))}};
     rim_pos pb = {{da, da + ab}, {prox_v3_norm2(g->dxa), prox_v3_norm2(prox_v3_sub(g->dxa, n))}};
-    axes2 ga = {g->aa, g->bb, g->nn, ab * ab, g->dn * g->dn}, gb = {g->bb, g->aa, g->nn, ab * ab, ga.dn2};
+    axes2 ga = {g->aa, g->bb, g->nn, ab * ab, g->dn * g->dn};
+    axes2 gb = {g->bb, g->aa, g->nn, ab * ab, ga.dn2};
     int ain = nested_raw(A, B, &pa, &ga, prox_v3_neg(d));
     int bin = rb <= ra && nested_raw(B, A, &pb, &gb, d); /* rarely tried: a predictable branch */
     double i2 = 1.0 / g->nn;
@@ -1014,9 +1015,9 @@ static RCC_NOINLINE prox_rcc_result case1_overlap(const prox_rcc *A, const prox_
  * minimum (the infinite solid cylinders are L - rA - rB apart and contain the finite ones,
  * docs/errata.md 8).  Overlapping: case1_overlap.
  * Takes pairs inside raw_window; hands to the general path (rcc_general) axes within 1e-3 rad of
- * parallel (ill-conditioned feet) and pairs that are not Case 1.  A disjoint pair costs one square root and one division, an overlapping one a
- * division and no root.  Every path returns its result as a tail expression, so the result is built
- * in the caller's return slot and never copied. */
+ * parallel (ill-conditioned feet) and pairs that are not Case 1.  A disjoint pair costs one square
+ * root and one division, an overlapping one a division and no root.  Every path returns its result
+ * as a tail expression, so the result is built in the caller's return slot and never copied. */
 static RCC_NOINLINE prox_rcc_result rcc_general(const prox_rcc *a, const prox_rcc *b, double ha2,
                                                 double hb2);
 static prox_rcc_result case1_raw(const prox_rcc *A, const prox_rcc *B, double aa, double bb)
@@ -1091,9 +1092,10 @@ static prox_rcc_result rcc_general(const prox_rcc *a, const prox_rcc *b, double 
 
 /* Whether a pair lies in the window of case1_raw, which also makes it valid (prox_rcc_validate):
  * base coordinates within PROX_MAX_COORD, squared axis lengths in [1e-40, 1e40] (finite and
- * nonzero), radii in [1e-20, 1e20] (positive) and the bases at most 1e20 apart, so that the products
- * of up to six squared lengths in nested_raw neither overflow nor lose precision to underflow.
- * NaNs fail every comparison.  One pass without branches; *aa, *bb: the squared axis lengths. */
+ * nonzero), radii in [1e-20, 1e20] (positive) and the bases at most 1e20 apart, so that the
+ * products of up to six squared lengths in nested_raw neither overflow nor lose precision to
+ * underflow.  NaNs fail every comparison.  One pass without branches; *aa, *bb: the squared axis
+ * lengths. */
 static int raw_window(const prox_rcc *A, const prox_rcc *B, double *aa, double *bb)
 {
     const double M = PROX_MAX_COORD;
