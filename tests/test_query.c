@@ -528,12 +528,12 @@ static void test_extreme_near_touching(void **st)
 }
 
 /* A box (or RPP) and a cylinder overlapping, moved apart by prox_shape_reposition: the translation
- * must leave them exactly `margin` apart, which holds only when the signed distance found the
- * deepest direction (the global minimum of h_A(D) + h_B(-D) over unit D, a multi-start search for
- * these kinds).  Sweeps found the support engine's ridge search stopping in a shallower valley for
- * ~6 in 10^4 such pairs (depth up to 2e-3 x scale too large); the first pair below is one, its true
- * depth bounded by a dense scan of directions (0.6215591 < 0.6335954 reported before).  Before the
- * fix the loop below also failed (pair 3059, 3.1e-5 x scale). */
+ * must leave them exactly `margin` apart.  The depth is the global minimum of h_A(D) + h_B(-D) over
+ * unit D, a multi-start search for these kinds; sweeps found the support engine's ridge search
+ * stopping in a shallower valley for ~6 in 10^4 such pairs (depth up to 2e-3 x scale too large).
+ * The first pair below is one, its true depth bounded by a dense scan of directions (0.6215591 <
+ * 0.6335954 reported before).  Before the ridge-search fix the loop below also failed (pair 3059,
+ * 3.1e-5 x scale); reposition's measured correction now also covers a depth found too large. */
 static void test_reposition_box_cylinder(void **st)
 {
     (void)st;
@@ -587,6 +587,31 @@ static void test_reposition_box_cylinder(void **st)
     assert_int_equal(bad, 0);
 }
 
+/* A near-touching disjoint pair (gap 1.1e-6, a box with a 22-unit edge and an RPP) asked to move to
+ * a margin of 0.92: its normal comes from witness points 1.1e-6 apart, off by ~3e-5 rad, and the
+ * uncorrected move ended 3.5e-10 (1.6e-11 x scale) short of the margin.  prox_shape_reposition now
+ * corrects the move once along the moved pair's own witness direction. */
+static void test_reposition_near_touching(void **st)
+{
+    (void)st;
+    const prox_box bx = {prox_v3(10.586387247700177, 1.5779202795442488, -3.3980022477070864),
+                         {prox_v3(-21.034838944369277, -3.8957988685380252, 6.7987584329319422),
+                          prox_v3(-0.022592913029653678, 0.6136093315138399, 0.2817073545804944),
+                          prox_v3(-0.115342638001421, 0.12634897793568786, -0.2844612920982641)}};
+    const prox_rpp rp = {6.9480025472597093, 7.3466017258774885, -5.0479823460581272, 0.91836081054760843,
+                         -3.5876372643056578, -2.2531639136870312};
+    prox_shape A = prox_shape_from_box(bx), B = prox_shape_from_rpp(rp);
+    const double margin = 0.9175161328743916;
+    prox_reposition_result r = prox_shape_reposition(&A, &B, margin);
+    assert_int_equal(r.status, PROX_OK);
+    assert_true(r.moved && r.signed_distance > 0.0 && r.signed_distance < 2e-6);
+    prox_shape B2;
+    assert_int_equal(prox_shape_translated(&B, r.translation, &B2), PROX_OK);
+    prox_distance_result d = prox_shape_distance(&A, &B2);
+    assert_near(d.distance, margin, 1e-12 * prox_shape_pair_scale(&A, &B2));
+    assert_near(prox_v3_norm(r.normal), 1.0, 1e-15);
+}
+
 int main(void)
 {
     test_init();
@@ -599,6 +624,7 @@ int main(void)
         cmocka_unit_test(test_relation_cases), cmocka_unit_test(test_null_args),
         cmocka_unit_test(test_relation_internal_tangency), cmocka_unit_test(test_extreme_near_touching),
         cmocka_unit_test(test_reposition_box_cylinder),
+        cmocka_unit_test(test_reposition_near_touching),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

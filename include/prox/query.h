@@ -86,7 +86,8 @@ PROX_API prox_contain_result prox_shape_contains(const prox_shape *a, const prox
 /// as given (tol = 0 leaves flush contacts to rounding). Nested wins over touching (see the result).
 PROX_API prox_relation_result prox_shape_relation(const prox_shape *a, const prox_shape *b, double tol);
 /// The translation to apply to B so that it clears A by `margin` (>= 0): zero when it already does,
-/// otherwise (margin - sd) along the signed-distance normal (the TRX "prescription to reposition").
+/// otherwise (margin - sd) along the signed-distance normal (the TRX "prescription to reposition"),
+/// then corrected once along the moved pair's own witness direction so that it ends margin apart.
 PROX_API prox_reposition_result prox_shape_reposition(const prox_shape *a, const prox_shape *b, double margin);
 /// B translated by t (any kind; an RPP stays an RPP). A null s gives a shape of invalid kind, so that
 /// any query on it reports PROX_EINVAL_SHAPE_KIND; prox_shape_translated reports the status itself.

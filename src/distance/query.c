@@ -11,6 +11,7 @@
 #include "prox/sat.h"
 #include "prox/support.h"
 
+#include <float.h>
 #include <stddef.h>
 
 /* Kind after RPP -> BOX, and the box itself. */
@@ -210,6 +211,8 @@ PROX_API prox_relation_result prox_shape_relation(const prox_shape *a, const pro
     return prox_shape_relation_with_signed(a, b, tol, NULL);
 }
 
+static prox_shape translate(const prox_shape *s, prox_vec3 t);
+
 PROX_API prox_reposition_result prox_shape_reposition(const prox_shape *a, const prox_shape *b, double margin)
 {
     prox_reposition_result r = {0};
@@ -225,6 +228,21 @@ PROX_API prox_reposition_result prox_shape_reposition(const prox_shape *a, const
     if (s.sd >= margin) return r;
     r.moved = 1;
     r.translation = prox_v3_scale(s.normal, margin - s.sd);
+    /* One correction, measured: the move is only as good as its direction.  A near-touching pair's
+     * normal comes from witness points a tiny gap apart (accurate to 1e-12 x scale each), and a
+     * move much longer than that gap along a direction off by alpha misses the margin by about
+     * length x alpha^2 / 2 (1.6e-11 x scale seen); the depth of an overlapping box-cylinder pair
+     * comes from a multi-start search (docs/algorithms/sat.md 2 (f)).  After the move the pair is
+     * about margin apart, where its witness direction is accurate, and moving B along it changes
+     * the distance by exactly the step. */
+    prox_shape b2 = translate(b, r.translation);
+    prox_distance_result d = prox_shape_distance(a, &b2);
+    double tol = 4.0 * DBL_EPSILON * prox_shape_pair_scale(a, &b2);
+    if (d.status == PROX_OK && d.distance > 0.0 && fabs(d.distance - margin) > tol) {
+        prox_vec3 n2 = prox_v3_scale(prox_v3_sub(d.p2, d.p1), 1.0 / d.distance);
+        r.translation = prox_v3_mad(r.translation, margin - d.distance, n2);
+        r.normal = prox_v3_normalize(r.translation);
+    }
     return r;
 }
 
