@@ -83,6 +83,29 @@ static void test_fuzz_deck_blank_card(void **state)
     prox_deck_free(&e);
 }
 
+/* fuzz_queries crash-95749060 (session 4, seed 4141; also in the session-3 code): a cylinder of radius
+ * 2.8e-86 at the origin against one 1.3e64 away.  The rim-rim solve, normalised by the small radius,
+ * overflowed to NaN; offer() took the NaN as its first best, and a NaN best refuses every later
+ * candidate, so prox_rcc_distance answered PROX_OK with a NaN distance.  A non-finite candidate is
+ * now never taken. */
+static void test_fuzz_rim_rim_overflow(void **state)
+{
+    (void)state;
+    prox_rcc a = {prox_v3(4.1445230292290475e-316, 1.0609978954826362e-314, 0), prox_v3(0, 0, 5),
+                  2.8324183294453365e-86};
+    prox_rcc b = {prox_v3(-1.3278450447320887e+64, 3.0038501333838797e-308, -2.353851178581914e-185),
+                  prox_v3(-9.2565287560484838e+61, 0, -17.5), 14};
+    prox_rcc_result r = prox_rcc_distance(&a, &b), r2 = prox_rcc_distance(&b, &a);
+    assert_int_equal(r.status, PROX_OK);
+    assert_int_equal(r2.status, PROX_OK);
+    assert_true(isfinite(r.distance) && prox_v3_isfinite(r.p1) && prox_v3_isfinite(r.p2));
+    assert_near(r.distance, 1.3278450447320887e+64, 1e-12 * 1.3278450447320887e+64);
+    assert_near(r2.distance, r.distance, 1e-12 * r.distance);
+    prox_signed_result g = prox_rcc_signed_distance(&a, &b);
+    assert_int_equal(g.status, PROX_OK);
+    assert_near(g.sd, r.distance, 1e-12 * r.distance);
+}
+
 int main(void)
 {
     test_init();
@@ -91,6 +114,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_sat_range),
         cmocka_unit_test(test_fuzz_extreme_needle_disk),
         cmocka_unit_test(test_fuzz_deck_blank_card),
+        cmocka_unit_test(test_fuzz_rim_rim_overflow),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

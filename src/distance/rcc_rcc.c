@@ -158,6 +158,9 @@ static void offer(query *q, prox_vec3 p1, prox_vec3 p2, prox_vec3 n, prox_pair_k
     if (cyl_contains(&q->B, p1, 0.0)) note_common(q, p1);
     if (cyl_contains(&q->A, p2, 0.0)) note_common(q, p2);
     double d = prox_v3_dist(p1, p2);
+    /* A candidate that overflowed (a rim-rim solve normalised by a radius 1e-150 of the pair's
+     * extent) is never taken: a NaN best would refuse every later candidate. */
+    if (!(d < INFINITY)) return;
     int better = !q->have_best || d < q->best.d;
     /* Every normal gives a lower bound on the distance (weak duality).  The best candidate's normal
      * is evaluated lazily by certified(); a near-tie's normal is kept here, because it may certify
