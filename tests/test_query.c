@@ -495,10 +495,8 @@ static void test_extreme_near_touching(void **st)
         for (int kb = 0; kb < 3; ++kb) {
             int moved = 0, bad = 0;
             for (int i = 0; i < 4000; ++i) {
-                prox_shape A = test_extreme_shape(&g, ka, prox_v3(0, 0, 0));
-                double sz = prox_shape_size(&A);
-                prox_vec3 cb = prox_v3_scale(test_unit(&g), pow(10.0, test_range(&g, -2, 1)) * sz);
-                prox_shape B = test_extreme_shape(&g, kb, cb);
+                prox_shape A, B;
+                test_extreme_pair(&g, ka, kb, &A, &B);
                 prox_distance_result d = prox_shape_distance(&A, &B);
                 assert_int_equal(d.status, PROX_OK);
                 double S = prox_shape_pair_scale(&A, &B);

@@ -238,8 +238,8 @@ static void test_rcc_case1_extreme_scale(void **state)
         prox_rcc_result d = prox_rcc_distance(&a, &b);
         for (int k = 0; k < 2; ++k) {
             double f = scales[k];
-            prox_rcc as = {prox_v3_scale(a.base, f), prox_v3_scale(a.axis, f), a.radius * f};
-            prox_rcc bs = {prox_v3_scale(b.base, f), prox_v3_scale(b.axis, f), b.radius * f};
+            prox_rcc as = sg_scale(a, f);
+            prox_rcc bs = sg_scale(b, f);
             prox_rcc_result e = prox_rcc_distance(&as, &bs);
             double S = prox_rcc_pair_scale(&a, &b);
             int ok = e.status == PROX_OK && fabs(e.distance / f - d.distance) <= 1e-12 * S &&
@@ -272,8 +272,8 @@ static void test_rcc_case1_general_path(void **state)
     const prox_rcc b0 = {prox_v3(5.719400264752875, -5.2312468099571454, -0.29317120783543998),
                          prox_v3(-227.13003164415474, 45.285832779171649, -1.9833439766186418),
                          0.0010691091868932758};
-    prox_rcc as = {prox_v3_scale(a0.base, f), prox_v3_scale(a0.axis, f), a0.radius * f};
-    prox_rcc bs = {prox_v3_scale(b0.base, f), prox_v3_scale(b0.axis, f), b0.radius * f};
+    prox_rcc as = sg_scale(a0, f);
+    prox_rcc bs = sg_scale(b0, f);
     double S0 = prox_rcc_pair_scale(&a0, &b0);
     assert_near(prox_rcc_distance(&as, &bs).distance / f, 0.00069747178450311992, 1e-12 * S0);
     assert_near(prox_rcc_distance(&a0, &b0).distance, 0.00069747178450311992, 1e-12 * S0);
@@ -288,8 +288,8 @@ static void test_rcc_case1_general_path(void **state)
         prox_rcc b = {prox_v3_scale(sg_unit(&r), 10.0 * sg_u(&r)), prox_v3_scale(w, hb), rb};
         prox_rcc a = case1_partner(&b, w, wa, t, s, L, ha, ra);
         prox_rcc_result d = prox_rcc_distance(&a, &b);
-        prox_rcc a2 = {prox_v3_scale(a.base, f), prox_v3_scale(a.axis, f), a.radius * f};
-        prox_rcc b2 = {prox_v3_scale(b.base, f), prox_v3_scale(b.axis, f), b.radius * f};
+        prox_rcc a2 = sg_scale(a, f);
+        prox_rcc b2 = sg_scale(b, f);
         prox_rcc_result e = prox_rcc_distance(&a2, &b2);
         double err = fabs(e.distance / f - d.distance) / prox_rcc_pair_scale(&a, &b);
         worst = err > worst ? err : worst;

@@ -312,10 +312,8 @@ static void test_support_near_touching(void **state)
             double worst = 0.0;
             int cnt = 0;
             for (int i = 0; i < 12000; ++i) {
-                prox_shape a = test_extreme_shape(&r, ka, prox_v3(0, 0, 0));
-                double sz = prox_shape_size(&a);
-                prox_vec3 cb = prox_v3_scale(test_unit(&r), pow(10.0, test_range(&r, -2, 1)) * sz);
-                prox_shape b = test_extreme_shape(&r, kb, cb);
+                prox_shape a, b;
+                test_extreme_pair(&r, ka, kb, &a, &b);
                 prox_distance_result d = prox_shape_distance(&a, &b);
                 if (d.status != PROX_OK || !(d.distance > 0.0)) continue;
                 prox_vec3 nrm = prox_v3_scale(prox_v3_sub(d.p2, d.p1), 1.0 / d.distance);

@@ -13,6 +13,7 @@
 #include <gsl/gsl_errno.h>
 
 #include "prox/prox.h"
+#include "prox/support.h" /* prox_shape_size */
 
 /* Fails with expected, actual and tolerance printed. */
 #define assert_near(actual, expected, tol)                                                         \
@@ -101,6 +102,16 @@ static inline prox_shape test_extreme_shape(test_rng *g, int kind, prox_vec3 c)
     }
     prox_sph s = {c, pow(10.0, test_range(g, -3, 3))};
     return prox_shape_from_sph(s);
+}
+
+/* An extreme pair: *a of kind ka at the origin, *b of kind kb centred 10^-2 .. 10 times a's size
+ * away in a random direction (close enough that both disjoint and overlapping pairs occur). */
+static inline void test_extreme_pair(test_rng *g, int ka, int kb, prox_shape *a, prox_shape *b)
+{
+    *a = test_extreme_shape(g, ka, prox_v3(0, 0, 0));
+    double sz = prox_shape_size(a);
+    prox_vec3 cb = prox_v3_scale(test_unit(g), pow(10.0, test_range(g, -2, 1)) * sz);
+    *b = test_extreme_shape(g, kb, cb);
 }
 
 /* Call first in every test main: the library must never rely on GSL's aborting handler. */
