@@ -22,7 +22,7 @@
 #endif
 
 #ifndef PROX_BENCH_VALIDATION_DIR
-#define PROX_BENCH_VALIDATION_DIR "../shared/validation"
+#define PROX_BENCH_VALIDATION_DIR "tests/data"
 #endif
 
 /* The case table, filled by the groups' setups. */

@@ -127,7 +127,7 @@ void bench_agarwal_case_study(const bench_opts *o)
             sample(&r, sm, &a, &b, &org);
             double lim = fmax(prox_v3_norm(a.axis) + prox_v3_norm(b.axis), a.radius + b.radius);
             int f = prox_v3_norm(org) <= lim ? 0 : 1;
-            int interfere = prox_rcc_distance(&a, &b).interfere == 1;
+            int interfere = prox_rcc_distance(&a, &b).intersect == 1;
             nn[f]++;
             for (int d = 0; d < NDEF; ++d) {
                 int c = case_of(d, &a, &b, interfere);

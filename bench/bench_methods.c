@@ -9,10 +9,10 @@
 static void run_distance(const void *cfg, const prox_rcc *a, const prox_rcc *b, bench_answer *out)
 {
     (void)cfg;
-    prox_rcc_result r = prox_rcc_distance(a, b);
+    prox_distance_result r = prox_rcc_distance(a, b);
     out->ok = r.status == PROX_OK;
     out->value = r.distance;
-    out->intersect = r.interfere;
+    out->intersect = r.intersect;
     out->p1 = r.p1, out->p2 = r.p2;
     out->has_points = 1;
 }
@@ -22,7 +22,7 @@ const bench_method bench_prox_distance_method = {"prox-distance", BENCH_DIST, ru
 static void run_sat(const void *cfg, const prox_rcc *a, const prox_rcc *b, bench_answer *out)
 {
     (void)cfg;
-    prox_sat_result r = prox_rcc_sat(a, b);
+    prox_test_result r = prox_rcc_sat(a, b);
     out->ok = r.status == PROX_OK;
     out->intersect = r.intersect;
     out->value = r.value;

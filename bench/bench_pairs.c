@@ -1,6 +1,6 @@
 /* prox_bench pair sets and method accuracy.
  * Protocol A follows Agarwal, Srivatsan & Bandyopadhyay (2016) Sec. 5 as restated in
- * ../shared/validation/README.md: A = (0 0 0, 0 0 5, r 2); B radius 20 U(0,1], height 50 U(0,1],
+ * tests/data/README.md: A = (0 0 0, 0 0 5, r 2); B radius 20 U(0,1], height 50 U(0,1],
  * base uniform in the ball |o| <= 25 (rejection from the cube), uniformly random rotation of +z.
  * Accuracy: errors relative to S; distance methods against max(sd_ref, 0), signed ones against sd_ref;
  * a verdict mismatch is counted only when |sd_ref| > 1e-12 S (touching pairs are either verdict). */

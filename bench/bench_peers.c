@@ -3,7 +3,7 @@
  * FCL 0.7 (GJK, libccd and independent solvers, distance tolerances 1e-2..1e-12), Bullet 3 (GJK
  * with zero margin, EPA when overlapping) and libccd 2.1 (GJK / MPR verdicts with prox's cylinder
  * support function). Sets with a quad-precision or constructed reference: agarwal_public,
- * stress_public (../shared/validation) and the bench stress generator; FCL's default setting also
+ * stress_public (tests/data) and the bench stress generator; FCL's default setting also
  * on the 10^6 pairs of Agarwal's protocol for the mean-time target of issue 3. */
 #include "bench_pairs.h"
 #ifdef PROX_BENCH_PEERS

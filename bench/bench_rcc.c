@@ -3,7 +3,7 @@
  * (|o| <= max(l1 + l2, r1 + r2)) and far field, per Agarwal case (1, 2.1, 2.2, 3, parallel) with the
  * case distribution beside the paper's Fig. 10, per closest primitive pair; the SAT verdict and the
  * signed distance on the same pairs; and every method's accuracy on the validation sets
- * (../shared/validation, quad-precision references) and on the bench's stress generator. */
+ * (tests/data, quad-precision references) and on the bench's stress generator. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -62,13 +62,13 @@ static void add_distance_classes(const bench_opts *o, const bench_pairs *P, cons
     for (size_t k = 0; k < NPAIR; ++k) ps[k] = subset_alloc(P->n);
     for (size_t k = 0; k < 3; ++k) c1[k] = subset_alloc(P->n);
     for (size_t i = 0; i < P->n; ++i) {
-        prox_rcc_result r = prox_rcc_distance(&P->a[i], &P->b[i]);
+        prox_distance_result r = prox_rcc_distance(&P->a[i], &P->b[i]);
         nnear += (size_t)is_near[i];
         for (size_t k = 0; k < ncase; ++k)
             if ((int)r.agarwal == k_cases[k].code) cs[k].idx[cs[k].n++] = i, ++cnt[k][is_near[i] ? 0 : 1];
         if ((unsigned)r.pair < NPAIR) ps[r.pair].idx[ps[r.pair].n++] = i;
         if (r.agarwal == PROX_CASE_1) {
-            subset *c = &c1[!r.interfere ? 0 : (r.a_in_b || r.b_in_a) ? 2 : 1];
+            subset *c = &c1[!r.intersect ? 0 : (r.a_in_b || r.b_in_a) ? 2 : 1];
             c->idx[c->n++] = i;
         }
     }

@@ -1,5 +1,5 @@
 /* prox_bench utilities: seeded RNG (xoshiro256** seeded by splitmix64, as the validation sets'
- * generator documents in ../shared/validation/README.md), Shoemake's uniform random rotation,
+ * generator documents in tests/data/README.md), Shoemake's uniform random rotation,
  * validation-file readers and order statistics. Setup code only: never timed. */
 #include <stdio.h>
 #include <stdlib.h>

@@ -19,7 +19,7 @@ set logscale xy
 set format y "%.0e"
 set xlabel "median ns/query"
 set ylabel "distance error / S (max: filled, p99: open)"
-set title "run time against error, $set (../shared/validation quad-precision references)"
+set title "run time against error, $set (tests/data quad-precision references)"
 set key outside right
 set grid
 plot "$dat" using 2:3:1 with labels left offset 0.5,0 font ",7" notitle, \

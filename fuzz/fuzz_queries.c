@@ -63,11 +63,11 @@ static int finite3(prox_vec3 v) { return prox_v3_isfinite(v); }
 static void fuzz_rcc(const prox_rcc *a, const prox_rcc *b, int moderate)
 {
     int valid = prox_rcc_validate(a) == PROX_OK && prox_rcc_validate(b) == PROX_OK;
-    prox_rcc_result r = prox_rcc_distance(a, b);
+    prox_distance_result r = prox_rcc_distance(a, b);
     CHECK(valid || r.status != PROX_OK);
     if (r.status == PROX_OK) CHECK(!isnan(r.distance) && r.distance >= 0);
     if (valid && moderate) CHECK(r.status == PROX_OK && isfinite(r.distance) && finite3(r.p1) && finite3(r.p2));
-    prox_sat_result s = prox_rcc_sat(a, b);
+    prox_test_result s = prox_rcc_sat(a, b);
     CHECK(valid || s.status != PROX_OK);
     if (valid && moderate) CHECK(s.status == PROX_OK);
     prox_signed_result g = prox_rcc_signed_distance(a, b);

@@ -80,7 +80,7 @@ static inline void tbs_check_sph_reposition(const tbs_solid *A, const prox_sph *
     double margin = 0.05 * S;
     prox_reposition_result rp = prox_shape_reposition(&A->shape, &B, margin);
     assert_int_equal(rp.status, PROX_OK);
-    prox_shape B2 = prox_shape_translate(&B, rp.translation);
+    prox_shape B2 = test_translate(&B, rp.translation);
     ld after = A->sdf(A->solid, L(B2.u.sph.center), &tmp) - s->radius;
     assert_near((double)after, rp.moved ? margin : (double)sd, 1e-9 * S);
 }

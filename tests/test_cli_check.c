@@ -107,7 +107,7 @@ static void test_check_example_json(void **state)
     assert_non_null(shell);
     assert_non_null(lug);
     assert_true(prox_shape_signed_distance(shell, lug).sd < -1.0);
-    prox_shape moved = prox_shape_translate(lug, t);
+    prox_shape moved = test_translate(lug, t);
     assert_near(prox_shape_signed_distance(shell, &moved).sd, 0, 1e-9 * 100);
     prox_deck_free(&d);
     free(out);

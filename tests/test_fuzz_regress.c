@@ -58,7 +58,7 @@ static void test_fuzz_extreme_needle_disk(void **state)
                   5.7592664921780962e+63};
     assert_int_equal(prox_rcc_validate(&a), PROX_OK);
     assert_int_equal(prox_rcc_validate(&b), PROX_OK);
-    prox_rcc_result r = prox_rcc_distance(&a, &b);
+    prox_distance_result r = prox_rcc_distance(&a, &b);
     assert_int_equal(r.status, PROX_OK);
     assert_true(isfinite(r.distance) && prox_v3_isfinite(r.p1) && prox_v3_isfinite(r.p2));
     prox_signed_result g = prox_rcc_signed_distance(&a, &b);
@@ -95,7 +95,7 @@ static void test_fuzz_rim_rim_overflow(void **state)
                   2.8324183294453365e-86};
     prox_rcc b = {prox_v3(-1.3278450447320887e+64, 3.0038501333838797e-308, -2.353851178581914e-185),
                   prox_v3(-9.2565287560484838e+61, 0, -17.5), 14};
-    prox_rcc_result r = prox_rcc_distance(&a, &b), r2 = prox_rcc_distance(&b, &a);
+    prox_distance_result r = prox_rcc_distance(&a, &b), r2 = prox_rcc_distance(&b, &a);
     assert_int_equal(r.status, PROX_OK);
     assert_int_equal(r2.status, PROX_OK);
     assert_true(isfinite(r.distance) && prox_v3_isfinite(r.p1) && prox_v3_isfinite(r.p2));

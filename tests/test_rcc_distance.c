@@ -1,4 +1,4 @@
-/* RCC-RCC exact distance: Agarwal's Table 1, the reference sets of ../shared/validation, seeded
+/* RCC-RCC exact distance: Agarwal's Table 1, the reference sets of tests/data, seeded
  * property tests (symmetry, rigid motion, scale, continuity), containment, point sets, bad input. */
 #include "test_util.h"
 #include <stdlib.h>
@@ -28,7 +28,7 @@ static size_t read_table(const char *path, int per, double **out)
 {
     FILE *f = fopen(path, "r");
     if (!f) {
-        print_error("cannot open %s (the reference sets live in ../shared/validation)\n", path);
+        print_error("cannot open %s (the reference sets live in tests/data)\n", path);
         fail();
     }
     size_t cap = 4096, n = 0;
@@ -65,7 +65,7 @@ static void check_reference_set(const char *name, set_stats *st)
     for (size_t i = 0; i < n; ++i) {
         prox_rcc a = rcc_of(P + 14 * i), b = rcc_of(P + 14 * i + 7);
         double sd = R[7 * i];
-        prox_rcc_result r = prox_rcc_distance(&a, &b);
+        prox_distance_result r = prox_rcc_distance(&a, &b);
         assert_int_equal(r.status, PROX_OK);
         double S = prox_rcc_pair_scale(&a, &b);
         double tol = 1e-12 * S;
@@ -94,7 +94,7 @@ static void check_reference_set(const char *name, set_stats *st)
             assert_true(on <= ptol);
         } else { /* a common point of both solids */
             st->overlaps++;
-            assert_true(r.interfere);
+            assert_true(r.intersect);
             assert_true(e1 <= ptol && e2 <= ptol && cyl_sdf(&b, r.p1) <= ptol);
         }
         if (derr / S > st->max_derr) st->max_derr = derr / S;
@@ -139,7 +139,7 @@ static prox_vec3 quat_axis(double q0, double q1, double q2, double q3, double le
 }
 
 /* Agarwal Table 1 with the printed points (2 decimals), corrected for the three misprints listed in
- * ../shared/validation/README.md: 7(a) p1/p2 swapped, 7(b) p2.x = 5.54, 7(c) p2.x = 1.16.  The table
+ * tests/data/README.md: 7(a) p1/p2 swapped, 7(b) p2.x = 5.54, 7(c) p2.x = 1.16.  The table
  * truncates as well as rounds (Fig. 8 p1.x = -1.9953 is printed -1.99), so a printed value v means
  * the true value lies within 0.01 of v. */
 static void test_rcc_table1(void **state)
@@ -160,7 +160,7 @@ static void test_rcc_table1(void **state)
     for (int k = 0; k < 5; ++k) {
         prox_rcc b = {prox_v3(T[k].o[0], T[k].o[1], T[k].o[2]),
                       quat_axis(T[k].q[0], T[k].q[1], T[k].q[2], T[k].q[3], 18), 2.5};
-        prox_rcc_result r = prox_rcc_distance(&a, &b);
+        prox_distance_result r = prox_rcc_distance(&a, &b);
         assert_int_equal(r.status, PROX_OK);
         assert_near(r.p1.x, T[k].p1[0], 0.01);
         assert_near(r.p1.y, T[k].p1[1], 0.01);
@@ -188,7 +188,7 @@ static void test_rcc_table1(void **state)
     prox_rcc b6 = {prox_v3(8, -8, 8), quat_axis(-0.2, 0.3, 1 / s2, sqrt(37.0) / 10, 18), 2.5};
     assert_int_equal(prox_rcc_distance(&a, &b6).agarwal, PROX_CASE_1);
     prox_rcc b8 = {prox_v3(-12, 12, -18), quat_axis(0.3, 0.4, -0.3, sqrt(33.0) / (5 * s2), 18), 2.5};
-    prox_rcc_result r8 = prox_rcc_distance(&a, &b8);
+    prox_distance_result r8 = prox_rcc_distance(&a, &b8);
     assert_int_equal(r8.agarwal, PROX_CASE_3);
     assert_int_equal(r8.pair, PROX_PAIR_CC);
 }
@@ -220,25 +220,25 @@ static void test_rcc_properties(void **state)
     for (int i = 0; i < 3000; ++i) {
         prox_rcc a, b;
         random_pair(&g, &a, &b);
-        prox_rcc_result r = prox_rcc_distance(&a, &b);
+        prox_distance_result r = prox_rcc_distance(&a, &b);
         assert_int_equal(r.status, PROX_OK);
         double S = prox_rcc_pair_scale(&a, &b), tol = 1e-12 * S;
-        prox_rcc_result rs = prox_rcc_distance(&b, &a);
+        prox_distance_result rs = prox_rcc_distance(&b, &a);
         assert_near(rs.distance, r.distance, tol);
-        assert_int_equal(rs.interfere, r.interfere);
+        assert_int_equal(rs.intersect, r.intersect);
         assert_int_equal(rs.a_in_b, r.b_in_a);
         test_rot R = test_random_rot(&g);
         prox_vec3 t = prox_v3(test_range(&g, -100, 100), test_range(&g, -100, 100), test_range(&g, -100, 100));
         prox_rcc am = rcc_move(&R, t, 1, a), bm = rcc_move(&R, t, 1, b);
-        prox_rcc_result rm = prox_rcc_distance(&am, &bm);
+        prox_distance_result rm = prox_rcc_distance(&am, &bm);
         assert_near(rm.distance, r.distance, 1e-12 * (S + 200));
         double s = pow(10.0, test_range(&g, -6, 6));
         prox_rcc as = rcc_move(&R, prox_v3(0, 0, 0), s, a), bs = rcc_move(&R, prox_v3(0, 0, 0), s, b);
-        prox_rcc_result rsc = prox_rcc_distance(&as, &bs);
+        prox_distance_result rsc = prox_rcc_distance(&as, &bs);
         assert_near(rsc.distance, s * r.distance, 1e-12 * s * S);
         prox_rcc bp = b;
         bp.base.x += 1e-9 * S;
-        prox_rcc_result rp = prox_rcc_distance(&a, &bp);
+        prox_distance_result rp = prox_rcc_distance(&a, &bp);
         assert_true(fabs(rp.distance - r.distance) <= 1e-9 * S * (1 + 1e-6));
     }
 }
@@ -249,11 +249,11 @@ static void test_rcc_containment(void **state)
     (void)state;
     prox_rcc big = {prox_v3(0, 0, 0), prox_v3(0, 0, 10), 5};
     prox_rcc small = {prox_v3(1, 0.5, 2), prox_v3(0.3, 0.2, 3), 1};
-    prox_rcc_result r = prox_rcc_distance(&big, &small);
-    assert_true(r.interfere && r.b_in_a && !r.a_in_b);
+    prox_distance_result r = prox_rcc_distance(&big, &small);
+    assert_true(r.intersect && r.b_in_a && !r.a_in_b);
     assert_near(r.distance, 0, 0);
     r = prox_rcc_distance(&small, &big);
-    assert_true(r.interfere && r.a_in_b && !r.b_in_a);
+    assert_true(r.intersect && r.a_in_b && !r.b_in_a);
     /* Coaxial, same radius, shorter: inside (closed sets). */
     prox_rcc inner = {prox_v3(0, 0, 1), prox_v3(0, 0, 8), 5};
     r = prox_rcc_distance(&inner, &big);
@@ -261,17 +261,17 @@ static void test_rcc_containment(void **state)
     /* Sticking out through the side by 1e-6: crossing, not nested. */
     prox_rcc out = {prox_v3(3, 0, 5), prox_v3(0, 0, 1), 2 + 1e-6};
     r = prox_rcc_distance(&out, &big);
-    assert_true(r.interfere && !r.a_in_b && !r.b_in_a);
+    assert_true(r.intersect && !r.a_in_b && !r.b_in_a);
     /* A tilted thin disk whose rim pokes out of the top by 1e-9 while its centre is inside. */
     prox_rcc disk = {prox_v3(0, 0, 9), prox_v3(0, 1e-3, 1e-3), 1.0};
     prox_vec3 w = prox_v3_normalize(disk.axis);
     double zmax = 9 + 1e-3 + 1.0 * prox_v3_norm(prox_v3_cross(w, prox_v3(0, 0, 1)));
     disk.base.z -= zmax - 10 - 1e-9;
     r = prox_rcc_distance(&disk, &big);
-    assert_true(r.interfere && !r.a_in_b);
+    assert_true(r.intersect && !r.a_in_b);
     disk.base.z -= 2e-9;
     r = prox_rcc_distance(&disk, &big);
-    assert_true(r.interfere && r.a_in_b);
+    assert_true(r.intersect && r.a_in_b);
 }
 
 /* Parallel faces and parallel sides give a set of proximal points (Fig. 9 (b), (d)). */
@@ -280,7 +280,7 @@ static void test_rcc_point_sets(void **state)
     (void)state;
     prox_rcc a = {prox_v3(0, 0, 0), prox_v3(0, 0, 4), 1};
     prox_rcc stacked = {prox_v3(0.5, 0, 5), prox_v3(0, 0, 3), 1}; /* faces 1 apart, overlapping */
-    prox_rcc_result r = prox_rcc_distance(&a, &stacked);
+    prox_distance_result r = prox_rcc_distance(&a, &stacked);
     assert_near(r.distance, 1.0, 1e-15);
     assert_true(r.point_set);
     prox_rcc side = {prox_v3(3, 0, 1), prox_v3(0, 0, 2), 1}; /* sides 1 apart over z in [1, 3] */
@@ -309,14 +309,14 @@ static void test_rcc_sweeps(void **state)
         /* B beside A, its top tilted towards A by eps: the contact is B's top rim against A's side,
          * at distance 1.5 - 4 sin(eps) - cos(eps) from A's surface. */
         prox_rcc b = {prox_v3(2.5, 0, 0), prox_v3(-4 * sin(eps), 0, 4 * cos(eps)), 1};
-        prox_rcc_result r = prox_rcc_distance(&a, &b);
+        prox_distance_result r = prox_rcc_distance(&a, &b);
         assert_int_equal(r.status, PROX_OK);
         assert_near(r.distance, 1.5 - 4 * sin(eps) - cos(eps), 1e-14);
     }
     for (int k = 0; k <= 16; ++k) { /* end faces approaching: gap 10^-k, then touching */
         double z = 4.0 + (k == 16 ? 0.0 : pow(10.0, -k));
         prox_rcc b = {prox_v3(0.3, 0.1, z), prox_v3(0, 0, 2), 0.5};
-        prox_rcc_result r = prox_rcc_distance(&a, &b);
+        prox_distance_result r = prox_rcc_distance(&a, &b);
         assert_near(r.distance, z - 4.0, 1e-15 * 4);
         if (z > 4.0) assert_true(r.point_set);
     }
@@ -340,9 +340,9 @@ static void test_rcc_regress_coaxial_noise(void **state)
     };
     for (int k = 0; k < 2; ++k) {
         prox_rcc a = rcc_of(v[k]), b = rcc_of(v[k] + 7);
-        prox_rcc_result r = prox_rcc_distance(&a, &b);
+        prox_distance_result r = prox_rcc_distance(&a, &b);
         assert_near(r.distance, v[k][14], 1e-12 * prox_rcc_pair_scale(&a, &b));
-        assert_false(r.interfere);
+        assert_false(r.intersect);
     }
 }
 
@@ -356,8 +356,8 @@ static void test_rcc_regress_needle_through_disk(void **state)
                   prox_v3(0.11679395791723586, -0.13646424575863564, 0.48901709317447895), 0.0031211540747441624};
     prox_rcc b = {prox_v3(-0.49783013352663452, 1.4002951266585248, 0.76252137191890501),
                   prox_v3(0.020817226652542833, -0.0098907849692678965, 0.019607881189001444), 0.50145874054649153};
-    prox_rcc_result r = prox_rcc_distance(&a, &b);
-    assert_true(r.interfere);
+    prox_distance_result r = prox_rcc_distance(&a, &b);
+    assert_true(r.intersect);
     assert_true(r.distance == 0.0);
     assert_true(cyl_sdf(&a, r.p1) <= 0.0 && cyl_sdf(&b, r.p1) <= 0.0);
 }
@@ -372,8 +372,8 @@ static void test_rcc_regress_unverified_witness(void **state)
                   prox_v3(0.26921340113155301, -0.47369418226177085, 1.3970525502727136), 0.36213672898980798};
     prox_rcc b = {prox_v3(0.70499273203065638, 1.19288979486628, -0.85419718622583263),
                   prox_v3(0.2891435871336181, -0.50876232196392035, 1.5004780003601179), 0.46670162674792554};
-    prox_rcc_result r = prox_rcc_distance(&a, &b);
-    assert_false(r.interfere);
+    prox_distance_result r = prox_rcc_distance(&a, &b);
+    assert_false(r.intersect);
     assert_near(r.distance, 3.11142e-08, 1e-13);
 }
 
@@ -382,7 +382,7 @@ static void test_rcc_bad_input(void **state)
     (void)state;
     prox_rcc a = {prox_v3(0, 0, 0), prox_v3(0, 0, 4), 1};
     prox_rcc b = {prox_v3(NAN, 0, 0), prox_v3(0, 0, 4), 1};
-    prox_rcc_result r = prox_rcc_distance(&a, &b);
+    prox_distance_result r = prox_rcc_distance(&a, &b);
     assert_int_equal(r.status, PROX_EINVAL_NONFINITE);
     assert_false(isnan(r.distance));
     b = (prox_rcc){prox_v3(0, 0, 0), prox_v3(0, 0, 0), 1};
@@ -417,7 +417,7 @@ static void test_rcc_bad_input_case1_window(void **state)
         {{prox_v3(-2, 3, 0), prox_v3(4, 0, 0), NAN}, PROX_EINVAL_NONFINITE},
     };
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
-        prox_rcc_result r1 = prox_rcc_distance(&a, &bad[k].b), r2 = prox_rcc_distance(&bad[k].b, &a);
+        prox_distance_result r1 = prox_rcc_distance(&a, &bad[k].b), r2 = prox_rcc_distance(&bad[k].b, &a);
         if (r1.status != bad[k].want || r2.status != bad[k].want)
             print_error("fault %zu: status %d / %d, want %d\n", k, r1.status, r2.status, bad[k].want);
         assert_int_equal(r1.status, bad[k].want);
@@ -427,7 +427,7 @@ static void test_rcc_bad_input_case1_window(void **state)
     const double f = 1e-30;
     prox_rcc as = {prox_v3_scale(a.base, f), prox_v3_scale(a.axis, f), a.radius * f};
     prox_rcc gs = {prox_v3_scale(good.base, f), prox_v3_scale(good.axis, f), good.radius * f};
-    prox_rcc_result r = prox_rcc_distance(&as, &gs), r0 = prox_rcc_distance(&a, &good);
+    prox_distance_result r = prox_rcc_distance(&as, &gs), r0 = prox_rcc_distance(&a, &good);
     assert_int_equal(r.status, PROX_OK);
     assert_near(r.distance / f, r0.distance, 1e-12 * 4.0);
     prox_rcc far = {prox_v3(1e30, 3, 0), prox_v3(4, 0, 0), 0.5};

@@ -18,7 +18,7 @@ static void test_rcc_random_constructed(void **state)
     for (int i = 0; i < n; ++i) {
         int fam = i % SG_NFAMILIES;
         sg_pair p = sg_make(&r, fam);
-        prox_rcc_result d = prox_rcc_distance(&p.a, &p.b);
+        prox_distance_result d = prox_rcc_distance(&p.a, &p.b);
         assert_int_equal(d.status, PROX_OK);
         double S = sg_pair_scale(&p.a, &p.b);
         double tol = 1e-12 * S + 8.0 * sg_input_ulp(&p.a, &p.b);
@@ -46,8 +46,8 @@ static void test_rcc_random_verdict(void **state)
         } while (prox_v3_norm(o) > 25);
         double rb = 20 * (1 - sg_u(&r)), hb = 50 * (1 - sg_u(&r));
         prox_rcc b = {o, prox_v3_scale(sg_unit(&r), hb), rb};
-        prox_rcc_result d = prox_rcc_distance(&a, &b);
-        prox_sat_result v = prox_rcc_sat(&a, &b);
+        prox_distance_result d = prox_rcc_distance(&a, &b);
+        prox_test_result v = prox_rcc_sat(&a, &b);
         double S = prox_rcc_pair_scale(&a, &b);
         if ((d.distance == 0.0) != (v.intersect != 0) && d.distance > 1e-12 * S) ++bad;
     }
@@ -90,12 +90,12 @@ typedef struct nest_tally {
 
 /* prox's nesting flags of (small, big), in both argument orders, against rcc_inside_brute where its
  * margin exceeds 1e-9 S; returns prox's result for (small, big) and, in *rev, for (big, small). */
-static prox_rcc_result check_nesting(int i, const prox_rcc *small, const prox_rcc *big, nest_tally *t,
-                                     prox_rcc_result *rev)
+static prox_distance_result check_nesting(int i, const prox_rcc *small, const prox_rcc *big, nest_tally *t,
+                                     prox_distance_result *rev)
 {
     double S = prox_rcc_pair_scale(small, big), m_ab, m_ba;
     int ab = rcc_inside_brute(small, big, &m_ab), ba = rcc_inside_brute(big, small, &m_ba);
-    prox_rcc_result d1 = prox_rcc_distance(small, big), d2 = prox_rcc_distance(big, small);
+    prox_distance_result d1 = prox_rcc_distance(small, big), d2 = prox_rcc_distance(big, small);
     assert_int_equal(d1.status, PROX_OK);
     assert_int_equal(d2.status, PROX_OK);
     if (m_ab > 1e-9 * S) {
@@ -128,8 +128,8 @@ static void test_rcc_random_containment(void **state)
         prox_vec3 ca = prox_v3_add(prox_v3_scale(w, hb * sg_u(&r)), prox_v3_scale(sg_perp(&r, w), rb * sg_u(&r)));
         prox_vec3 wa = sg_u(&r) < 0.3 ? sg_tilt(&r, w, sg_log(&r, 1e-6, 0.3)) : sg_unit(&r);
         prox_rcc small = {prox_v3_mad(ca, -0.5 * ha, wa), prox_v3_scale(wa, ha), ra};
-        prox_rcc_result d2, d1 = check_nesting(i, &small, &big, &t, &d2);
-        if (d1.a_in_b) assert_true(d1.interfere && d1.distance == 0.0);
+        prox_distance_result d2, d1 = check_nesting(i, &small, &big, &t, &d2);
+        if (d1.a_in_b) assert_true(d1.intersect && d1.distance == 0.0);
     }
     printf("# %d containment pairs, %d decided by the brute force (%d inside), mismatches %d\n", n,
            t.decided, t.inside, t.bad);
@@ -168,8 +168,8 @@ static void test_rcc_case1_nesting(void **state)
         double t = hb * sg_u(&r), s = ha * sg_u(&r), L = rb * sg_u(&r);
         prox_rcc big = {prox_v3_scale(sg_unit(&r), 10.0 * sg_u(&r)), prox_v3_scale(w, hb), rb};
         prox_rcc small = case1_partner(&big, w, wa, t, s, L, ha, ra);
-        prox_rcc_result d2, d1 = check_nesting(i, &small, &big, &tally, &d2);
-        assert_true(d1.interfere && d2.interfere && d1.distance == 0.0 && d2.distance == 0.0);
+        prox_distance_result d2, d1 = check_nesting(i, &small, &big, &tally, &d2);
+        assert_true(d1.intersect && d2.intersect && d1.distance == 0.0 && d2.distance == 0.0);
         case1 += d1.agarwal == PROX_CASE_1;
     }
     printf("# %d overlapping Case-1 constructions (%d classified Case 1), %d decided by the brute "
@@ -205,8 +205,8 @@ static void test_rcc_case1_nesting_boundary(void **state)
         long double m1 = tb_circle_line_max_dist(prox_v3_add(small.base, small.axis), wa, ra, big.base, w);
         double delta = sg_log(&r, 1e-8, 1e-2) * (sg_u(&r) < 0.5 ? -1.0 : 1.0);
         big.radius = (double)((m0 > m1 ? m0 : m1) * (1.0L + delta));
-        prox_rcc_result d2, d1 = check_nesting(i, &small, &big, &tally, &d2);
-        assert_true(d1.interfere && d2.interfere);
+        prox_distance_result d2, d1 = check_nesting(i, &small, &big, &tally, &d2);
+        assert_true(d1.intersect && d2.intersect);
         case1 += d1.agarwal == PROX_CASE_1 && d2.agarwal == PROX_CASE_1;
     }
     printf("# %d Case-1 pairs at the nesting boundary (%d classified Case 1), %d decided by the brute "
@@ -235,22 +235,22 @@ static void test_rcc_case1_extreme_scale(void **state)
         double L = (rb + ra) * 1.5 * sg_u(&r); /* a third disjoint */
         prox_rcc b = {prox_v3_scale(sg_unit(&r), 10.0 * sg_u(&r)), prox_v3_scale(w, hb), rb};
         prox_rcc a = case1_partner(&b, w, wa, t, s, L, ha, ra);
-        prox_rcc_result d = prox_rcc_distance(&a, &b);
+        prox_distance_result d = prox_rcc_distance(&a, &b);
         for (int k = 0; k < 2; ++k) {
             double f = scales[k];
             prox_rcc as = sg_scale(a, f);
             prox_rcc bs = sg_scale(b, f);
-            prox_rcc_result e = prox_rcc_distance(&as, &bs);
+            prox_distance_result e = prox_rcc_distance(&as, &bs);
             double S = prox_rcc_pair_scale(&a, &b);
             int ok = e.status == PROX_OK && fabs(e.distance / f - d.distance) <= 1e-12 * S &&
-                     e.interfere == d.interfere && e.a_in_b == d.a_in_b && e.b_in_a == d.b_in_a;
+                     e.intersect == d.intersect && e.a_in_b == d.a_in_b && e.b_in_a == d.b_in_a;
             if (ok && d.distance > 0.0)
                 ok = prox_v3_dist(prox_v3_scale(e.p1, 1.0 / f), d.p1) <= 1e-12 * S &&
                      prox_v3_dist(prox_v3_scale(e.p2, 1.0 / f), d.p2) <= 1e-12 * S;
             if (!ok && bad++ < 5)
                 print_error("pair %d scale %g: d %.17g -> %.17g, flags %d%d%d -> %d%d%d\n", i, f,
-                            d.distance, e.distance / f, d.interfere, d.a_in_b, d.b_in_a,
-                            e.interfere, e.a_in_b, e.b_in_a);
+                            d.distance, e.distance / f, d.intersect, d.a_in_b, d.b_in_a,
+                            e.intersect, e.a_in_b, e.b_in_a);
         }
     }
     assert_int_equal(bad, 0);
@@ -287,10 +287,10 @@ static void test_rcc_case1_general_path(void **state)
         double t = hb * sg_u(&r), s = ha * sg_u(&r), L = (ra + rb) * (1.0 + sg_log(&r, 1e-6, 1.0));
         prox_rcc b = {prox_v3_scale(sg_unit(&r), 10.0 * sg_u(&r)), prox_v3_scale(w, hb), rb};
         prox_rcc a = case1_partner(&b, w, wa, t, s, L, ha, ra);
-        prox_rcc_result d = prox_rcc_distance(&a, &b);
+        prox_distance_result d = prox_rcc_distance(&a, &b);
         prox_rcc a2 = sg_scale(a, f);
         prox_rcc b2 = sg_scale(b, f);
-        prox_rcc_result e = prox_rcc_distance(&a2, &b2);
+        prox_distance_result e = prox_rcc_distance(&a2, &b2);
         double err = fabs(e.distance / f - d.distance) / prox_rcc_pair_scale(&a, &b);
         worst = err > worst ? err : worst;
         if (!(err <= 1e-12) && bad++ < 5)
@@ -317,8 +317,8 @@ static void test_rcc_random_extreme_aspect(void **state)
         double sa = fmax(prox_v3_norm(a.axis), a.radius);
         prox_rcc b = {prox_v3_scale(sg_unit(&r), sg_log(&r, 1e-3, 1e3) * sa), prox_v3_scale(sg_unit(&r), sg_log(&r, 1e-3, 1e3)),
                       sg_log(&r, 1e-3, 1e3)};
-        prox_rcc_result d = prox_rcc_distance(&a, &b);
-        prox_sat_result v = prox_rcc_sat(&a, &b);
+        prox_distance_result d = prox_rcc_distance(&a, &b);
+        prox_test_result v = prox_rcc_sat(&a, &b);
         assert_int_equal(d.status, PROX_OK);
         assert_int_equal(v.status, PROX_OK);
         double S = prox_rcc_pair_scale(&a, &b);

@@ -1,5 +1,5 @@
 /* Tests of prox_rcc_sat (Eberly's separating axes with a certified minimisation of G over the
- * tangent plane): the verdict on the reference sets of ../shared/validation (must equal sd <= 0
+ * tangent plane): the verdict on the reference sets of tests/data (must equal sd <= 0
  * except within 1e-12 x scale of touching), validity of every reported separating direction
  * (checked with prox_rcc_support, independently of the SAT code), a dense-direction brute force,
  * seeded properties (symmetry, rigid motion, scale) and hand-made cases. */
@@ -21,7 +21,7 @@ static double support_gap(const prox_rcc *a, const prox_rcc *b, prox_vec3 d)
 static void check_verdict(const prox_rcc *a, const prox_rcc *b, double ref, int *ambiguous)
 {
     double S = prox_rcc_pair_scale(a, b);
-    prox_sat_result r = prox_rcc_sat(a, b);
+    prox_test_result r = prox_rcc_sat(a, b);
     assert_int_equal(r.status, PROX_OK);
     if (!r.intersect) {
         /* the direction must separate, with the reported gap, pointing from A towards B */
@@ -110,7 +110,7 @@ static void test_sat_dense_directions(void **state)
         prox_rcc a = random_rcc(&g, 3.0), b = random_rcc(&g, 3.0);
         double S = prox_rcc_pair_scale(&a, &b);
         double dg = dense_gap(&a, &b);
-        prox_sat_result r = prox_rcc_sat(&a, &b);
+        prox_test_result r = prox_rcc_sat(&a, &b);
         /* the independent signed distance decides the expected verdict */
         double sd = prox_rcc_signed_distance(&a, &b).sd;
         check_verdict(&a, &b, sd, &amb);
@@ -129,7 +129,7 @@ static void test_sat_properties(void **state)
         double S = prox_rcc_pair_scale(&a, &b);
         double sd = prox_rcc_signed_distance(&a, &b).sd;
         if (fabs(sd) <= 1e-9 * S) continue; /* verdict legitimately unstable at touching */
-        prox_sat_result r = prox_rcc_sat(&a, &b);
+        prox_test_result r = prox_rcc_sat(&a, &b);
         assert_int_equal(r.intersect, sd <= 0.0);
         assert_int_equal(prox_rcc_sat(&b, &a).intersect, r.intersect);
         test_rot R = test_random_rot(&g);
@@ -150,7 +150,7 @@ static void test_sat_hand_made(void **state)
     prox_rcc a = {{0, 0, 0}, {0, 0, 2}, 1};
     /* parallel axes: radially apart, radially overlapping, apart in height */
     prox_rcc p1 = {{2.6, 0, 0.5}, {0, 0, 1}, 1.5}, p2 = {{2.4, 0, 0.5}, {0, 0, 1}, 1.5}, p3 = {{0.5, 0, 2.1}, {0, 0, 1}, 1};
-    prox_sat_result r = prox_rcc_sat(&a, &p1);
+    prox_test_result r = prox_rcc_sat(&a, &p1);
     assert_int_equal(r.intersect, 0);
     assert_int_equal(r.decided_by, PROX_SAT_PARALLEL);
     assert_near(r.value, 0.1, 1e-15);
@@ -197,10 +197,10 @@ static void test_sat_sliver_portal_regression(void **state)
                   {-1.1463873783739271, 0.68674488099258157, -0.20092110598857102}, 0.37366444355744322};
     prox_rcc b = {{-1.1362728725644018, 3.4579237431363969, 1.8074935273294432},
                   {3.0637226277367438, -1.8353271076341788, 0.53696206920929046}, 3.6705734616502945};
-    prox_rcc_result d = prox_rcc_distance(&a, &b);
-    assert_int_equal(d.interfere, 0);
+    prox_distance_result d = prox_rcc_distance(&a, &b);
+    assert_int_equal(d.intersect, 0);
     assert_near(d.distance, 4.48e-12, 5e-14);
-    prox_sat_result r = prox_rcc_sat(&a, &b);
+    prox_test_result r = prox_rcc_sat(&a, &b);
     assert_int_equal(r.intersect, 0);
     assert_true(r.value > 0.0 && r.value <= d.distance + 1e-15);
     assert_true(support_gap(&a, &b, r.direction) > 0.0);
@@ -220,7 +220,7 @@ static void test_sat_certificate_sound_stress(void **state)
         for (int k = 0; k < 600; ++k) {
             sg_pair p = sg_make(&r, fam);
             double S = sg_pair_scale(&p.a, &p.b), tol = 1e-12 * S + 8.0 * sg_input_ulp(&p.a, &p.b);
-            prox_sat_result v = prox_rcc_sat(&p.a, &p.b);
+            prox_test_result v = prox_rcc_sat(&p.a, &p.b);
             assert_int_equal(v.status, PROX_OK);
             n++;
             if (v.decided_by == PROX_SAT_CERTIFIED && v.value < 0.0) {

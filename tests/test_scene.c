@@ -145,7 +145,7 @@ static void test_scene_modes_random(void **state)
         prox_signed_result s = prox_shape_signed_distance(&a, &b);
         assert_near(r.signed_distance, s.sd, 0);
         if (s.sd < 0) { /* moving b by the reposition leaves the pair touching */
-            prox_shape moved = prox_shape_translate(&b, r.reposition);
+            prox_shape moved = test_translate(&b, r.reposition);
             prox_signed_result s2 = prox_shape_signed_distance(&a, &moved);
             assert_near(s2.sd, 0, 1e-8 * 10);
         }

@@ -1,5 +1,5 @@
 /* Tests of prox_rcc_signed_distance and the generic support-function engine
- * (prox_shape_signed_distance_support): the reference sets of ../shared/validation (depth to
+ * (prox_shape_signed_distance_support): the reference sets of tests/data (depth to
  * 1e-9 x scale, distance to 1e-12 x scale, 1e-10 for the `far` family whose input carries that
  * rounding), witness validity, seeded properties (symmetry, rigid motion, scale), hand-made
  * cases, a long-double brute force on random pairs, and other shape kinds. */

@@ -49,13 +49,13 @@ static void check_pair(const sg_pair *p, sg_rng *r, worst *w)
 {
     const prox_rcc *a = &p->a, *b = &p->b;
     double S = sg_pair_scale(a, b), tol = rel_tol(a, b, S);
-    prox_rcc_result d = prox_rcc_distance(a, b);
+    prox_distance_result d = prox_rcc_distance(a, b);
     if (d.status != PROX_OK || !isfinite(d.distance)) {
         keep(&w[W_DIST], INFINITY, a, b);
         return;
     }
     keep(&w[W_DIST], fabs(d.distance - p->d_ref) / S / tol, a, b);
-    prox_rcc_result e = prox_rcc_distance(b, a);
+    prox_distance_result e = prox_rcc_distance(b, a);
     keep(&w[W_SYM], fabs(e.distance - d.distance) / S / tol, a, b);
     /* witnesses: |p1 - p2| = d and, when apart, both points on their surfaces */
     double wit = fabs(prox_v3_dist(d.p1, d.p2) - d.distance);
@@ -74,7 +74,7 @@ static void check_pair(const sg_pair *p, sg_rng *r, worst *w)
     prox_rcc sa = sg_scale(*a, s), sb = sg_scale(*b, s);
     keep(&w[W_SCALE], fabs(prox_rcc_distance(&sa, &sb).distance - s * d.distance) / (s * S) / tol, a, b);
     /* SAT verdict against the (reference) distance sign, outside touching */
-    prox_sat_result v = prox_rcc_sat(a, b);
+    prox_test_result v = prox_rcc_sat(a, b);
     int bad = v.status != PROX_OK || (p->d_ref > tol * S && v.intersect);
     keep(&w[W_SAT], bad ? INFINITY : 0.0, a, b);
 }

@@ -26,6 +26,18 @@
         }                                                                                          \
     } while (0)
 
+/* s translated by t through prox_shape_translated, which must accept it. */
+static inline prox_shape test_translate(const prox_shape *s, prox_vec3 t)
+{
+    prox_shape o = *s;
+    prox_status st = prox_shape_translated(s, t, &o);
+    if (st != PROX_OK) {
+        print_error("prox_shape_translated: %s\n", prox_status_str(st));
+        fail();
+    }
+    return o;
+}
+
 typedef struct test_rng {
     uint64_t s[4];
 } test_rng;

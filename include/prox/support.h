@@ -4,7 +4,7 @@
 #ifndef PROX_SUPPORT_H
 #define PROX_SUPPORT_H
 
-#include "sat.h"
+#include "result.h"
 #include "shapes.h"
 
 /// Support function h(d) = max over x in s of d.x (d need not be unit; h(0) = 0). The shape is not

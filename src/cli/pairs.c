@@ -1,5 +1,5 @@
 /* prox pairs: cylinder pairs on stdin, one result line per pair on stdout.
- * Input format: ../shared/validation/README.md ("Pair line"): 14 numbers, cylinder A as base centre,
+ * Input format: tests/data/README.md ("Pair line"): 14 numbers, cylinder A as base centre,
  * axis vector, radius, then B; '#' comment lines and blank lines are skipped (they produce no output).
  * A malformed line (wrong count, not a number, invalid cylinder) is reported on stderr with its line
  * number and reason; the other lines are still processed and the exit status is 1. */
@@ -121,7 +121,7 @@ static double time_queries(const pair_list *l, pairs_mode mode)
 static int answer(const prox_rcc *a, const prox_rcc *b, pairs_mode mode, long lineno)
 {
     if (mode == MODE_DISTANCE) {
-        prox_rcc_result r = prox_rcc_distance(a, b);
+        prox_distance_result r = prox_rcc_distance(a, b);
         if (r.status != PROX_OK) goto fail_status;
         printf("%.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", r.distance, r.p1.x, r.p1.y, r.p1.z, r.p2.x,
                r.p2.y, r.p2.z);
@@ -140,7 +140,7 @@ static int answer(const prox_rcc *a, const prox_rcc *b, pairs_mode mode, long li
                r.p2.z);
         return 1;
     }
-    prox_sat_result r = prox_rcc_sat(a, b);
+    prox_test_result r = prox_rcc_sat(a, b);
     if (r.status != PROX_OK) {
         fprintf(stderr, "prox pairs: line %ld: %s\n", lineno, prox_status_str(r.status));
         return 0;

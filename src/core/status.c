@@ -1,5 +1,6 @@
 /* Status codes and their messages. */
 #include "prox/status.h"
+#include "prox/version.h"
 
 PROX_API const char *prox_status_str(prox_status s)
 {
@@ -23,3 +24,5 @@ PROX_API const char *prox_status_str(prox_status s)
     }
     return "unknown status code";
 }
+
+PROX_API const char *prox_version(void) { return PROX_VERSION_STRING; }

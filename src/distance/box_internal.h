@@ -5,6 +5,7 @@
 #define PROX_DISTANCE_BOX_INTERNAL_H
 
 #include "prox/distance.h"
+#include "prox/pairs.h"
 #include "prox/query.h"
 
 /* a / s by components: unlike a * (1 / s) it stays finite for subnormal s (fuzz crash-6fd5bd04). */

@@ -62,14 +62,14 @@ static prox_signed_result mirror_s(prox_signed_result r)
 static prox_distance_result rcc_rcc_distance(const prox_rcc *a, const prox_rcc *b)
 {
     prox_distance_result r = {0};
-    prox_rcc_result e = prox_rcc_distance(a, b);
+    prox_distance_result e = prox_rcc_distance(a, b);
     r.status = e.status;
     if (r.status != PROX_OK) return r;
-    r.intersect = e.interfere;
+    r.intersect = e.intersect;
     r.distance = e.distance;
     r.p1 = e.p1;
     r.p2 = e.p2;
-    r.certificate_gap = e.interfere ? 0.0 : e.certificate_gap;
+    r.certificate_gap = e.intersect ? 0.0 : e.certificate_gap;
     return r;
 }
 
@@ -138,7 +138,7 @@ PROX_API prox_test_result prox_shape_test(const prox_shape *a, const prox_shape 
     if (x->kind == PROX_SHAPE_BOX && y->kind == PROX_SHAPE_BOX) return prox_box_box_test(&x->box, &y->box);
     if (x->kind == PROX_SHAPE_BOX && y->kind == PROX_SHAPE_RCC) return prox_box_rcc_test(&x->box, &y->s->u.rcc);
     if (x->kind == PROX_SHAPE_RCC && y->kind == PROX_SHAPE_RCC) { /* the certified SAT: ~6x cheaper */
-        prox_sat_result v = prox_rcc_sat(&x->s->u.rcc, &y->s->u.rcc);
+        prox_test_result v = prox_rcc_sat(&x->s->u.rcc, &y->s->u.rcc);
         r.status = v.status;
         r.intersect = v.intersect;
         return r;
@@ -261,16 +261,6 @@ static prox_shape translate(const prox_shape *s, prox_vec3 t)
         break;
     }
     return o;
-}
-
-PROX_API prox_shape prox_shape_translate(const prox_shape *s, prox_vec3 t)
-{
-    if (!s) { /* no status to return: an invalid kind makes every later query say so */
-        prox_shape o = {0};
-        o.kind = (prox_shape_kind)-1;
-        return o;
-    }
-    return translate(s, t);
 }
 
 PROX_API prox_status prox_shape_translated(const prox_shape *s, prox_vec3 t, prox_shape *out)

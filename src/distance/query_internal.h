@@ -3,6 +3,7 @@
 #ifndef PROX_DISTANCE_QUERY_INTERNAL_H
 #define PROX_DISTANCE_QUERY_INTERNAL_H
 
+#include "prox/pairs.h"
 #include "prox/query.h"
 
 /* prox_shape_relation, also returning the signed distance it computed (normal and witness points

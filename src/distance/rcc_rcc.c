@@ -791,18 +791,18 @@ static int separated_cheaply(const query *q)
     return 0;
 }
 
-static void fill_overlap(const query *q, prox_rcc_result *res, prox_vec3 origin)
+static void fill_overlap(const query *q, prox_distance_result *res, prox_vec3 origin)
 {
     res->distance = 0.0;
     res->p1 = res->p2 = prox_v3_add(q->common, origin);
     res->pair = PROX_PAIR_OVERLAP;
     res->feature1 = res->feature2 = PROX_FEAT_INSIDE;
-    res->interfere = 1;
+    res->intersect = 1;
     res->certificate_gap = 0.0;
 }
 
 /* Decides containment and, for nested pairs, reports the inner centre as the common point. */
-static void containment(query *q, prox_rcc_result *res)
+static void containment(query *q, prox_distance_result *res)
 {
     res->a_in_b = cyl_in_cyl(&q->A, &q->B, 0.0);
     res->b_in_a = cyl_in_cyl(&q->B, &q->A, 0.0);
@@ -869,7 +869,7 @@ static prox_status search(query *q, const prox_rcc *a, const prox_rcc *b, prox_a
     if (!settle(q) && q->have_best) {
         /* Not certified (near-touching or near-parallel contacts): the certified separating-axis
          * verdict (src/sat) decides; only an intersecting pair needs a common point. */
-        prox_sat_result v = prox_rcc_sat(a, b);
+        prox_test_result v = prox_rcc_sat(a, b);
         if (v.status == PROX_OK && v.intersect &&
             !find_common_point(q, prox_v3_scale(prox_v3_add(q->best.p1, q->best.p2), 0.5), 200, &last)) {
             /* The verdict is certified: the solids intersect even though no common point was
@@ -887,7 +887,7 @@ static prox_status search(query *q, const prox_rcc *a, const prox_rcc *b, prox_a
 }
 
 /* Fills the result of a disjoint pair from the best candidate. */
-static void fill_disjoint(const query *q, prox_rcc_result *res, prox_vec3 origin)
+static void fill_disjoint(const query *q, prox_distance_result *res, prox_vec3 origin)
 {
     if (res->agarwal == PROX_CASE_2_1 && q->best.kind != PROX_PAIR_CS && q->best.kind != PROX_PAIR_SS)
         res->agarwal = PROX_CASE_2_2; /* the foot of P(D, z) fell beyond the axis segment (Fig. 7 (b)) */
@@ -980,7 +980,7 @@ typedef struct case1_geom {
  * nested (a coin toss in a mixture, which cost 7-8 ns per pair in mispredictions): nested_raw
  * branches only on whether its bounds decide, and the point is picked by an index.  Out of line,
  * so that the disjoint path stays lean. */
-static RCC_NOINLINE prox_rcc_result case1_overlap(const prox_rcc *A, const prox_rcc *B,
+static RCC_NOINLINE prox_distance_result case1_overlap(const prox_rcc *A, const prox_rcc *B,
                                                   const case1_geom *g)
 {
     prox_vec3 a = A->axis, b = B->axis, d = g->d, n = g->n;
@@ -998,7 +998,7 @@ static RCC_NOINLINE prox_rcc_result case1_overlap(const prox_rcc *A, const prox_
     /* chosen by an index, not a branch: nested or not is a coin toss in a mixture */
     const prox_vec3 pts[3] = {mid, prox_v3_mad(B->base, 0.5, b), prox_v3_mad(A->base, 0.5, a)};
     prox_vec3 x = pts[(bin & !ain) + 2 * ain];
-    return (prox_rcc_result){.status = PROX_OK,
+    return (prox_distance_result){.status = PROX_OK,
                              .distance = 0.0,
                              .p1 = x,
                              .p2 = x,
@@ -1006,7 +1006,7 @@ static RCC_NOINLINE prox_rcc_result case1_overlap(const prox_rcc *A, const prox_
                              .feature1 = PROX_FEAT_INSIDE,
                              .feature2 = PROX_FEAT_INSIDE,
                              .agarwal = PROX_CASE_1,
-                             .interfere = 1,
+                             .intersect = 1,
                              .a_in_b = ain,
                              .b_in_a = bin};
 }
@@ -1021,9 +1021,9 @@ static RCC_NOINLINE prox_rcc_result case1_overlap(const prox_rcc *A, const prox_
  * parallel (ill-conditioned feet) and pairs that are not Case 1.  A disjoint pair costs one square
  * root and one division, an overlapping one a division and no root.  Every path returns its result
  * as a tail expression, so the result is built in the caller's return slot and never copied. */
-static RCC_NOINLINE prox_rcc_result rcc_general(const prox_rcc *a, const prox_rcc *b, double ha2,
+static RCC_NOINLINE prox_distance_result rcc_general(const prox_rcc *a, const prox_rcc *b, double ha2,
                                                 double hb2);
-static prox_rcc_result case1_raw(const prox_rcc *A, const prox_rcc *B, double aa, double bb)
+static prox_distance_result case1_raw(const prox_rcc *A, const prox_rcc *B, double aa, double bb)
 {
     prox_vec3 a = A->axis, b = B->axis, d = prox_v3_sub(B->base, A->base);
     prox_vec3 n = prox_v3_cross(a, b), dxb = prox_v3_cross(d, b), dxa = prox_v3_cross(d, a);
@@ -1039,7 +1039,7 @@ static prox_rcc_result case1_raw(const prox_rcc *A, const prox_rcc *B, double aa
         prox_vec3 v = prox_v3_scale(n, dn < 0.0 ? -inv : inv);
         if (L > rr) { /* (as the two roundings agree) */
             /* each point from its own foot: on its surface to rounding */
-            return (prox_rcc_result){.status = PROX_OK,
+            return (prox_distance_result){.status = PROX_OK,
                                      .distance = L - rr,
                                      .p1 = prox_v3_mad(prox_v3_mad(A->base, sn * i2, a), ra, v),
                                      .p2 = prox_v3_mad(prox_v3_mad(B->base, tn * i2, b), -rb, v),
@@ -1057,10 +1057,10 @@ static prox_rcc_result case1_raw(const prox_rcc *A, const prox_rcc *B, double aa
 
 /* Steps 1-6 for every pair that case1_raw does not answer (validated; squared heights ha2, hb2).
  * Kept out of line: its large query state would otherwise burden the Case 1 path's frame. */
-static prox_rcc_result rcc_general(const prox_rcc *a, const prox_rcc *b, double ha2,
+static prox_distance_result rcc_general(const prox_rcc *a, const prox_rcc *b, double ha2,
                                                 double hb2)
 {
-    prox_rcc_result res = {0};
+    prox_distance_result res = {0};
 
     /* Step 1: both cylinders prepared relative to A's centre.  Only the flags are cleared: the
      * cylinders are filled by cyl_init, the candidate is read only once have_best is set. */
@@ -1112,12 +1112,12 @@ static int raw_window(const prox_rcc *A, const prox_rcc *B, double *aa, double *
     return ok;
 }
 
-PROX_API prox_rcc_result prox_rcc_distance(const prox_rcc *a, const prox_rcc *b)
+PROX_API prox_distance_result prox_rcc_distance(const prox_rcc *a, const prox_rcc *b)
 {
     double ha2, hb2;
     if (a && b && raw_window(a, b, &ha2, &hb2)) return case1_raw(a, b, ha2, hb2);
     prox_status st = prox_rcc_validate_h2(a, &ha2);
     if (st == PROX_OK) st = prox_rcc_validate_h2(b, &hb2);
-    if (st != PROX_OK) return (prox_rcc_result){.status = st};
+    if (st != PROX_OK) return (prox_distance_result){.status = st};
     return rcc_general(a, b, ha2, hb2); /* valid, outside the window */
 }

@@ -16,8 +16,8 @@ PROX_API prox_crosscheck_result prox_rcc_crosscheck(const prox_rcc *a, const pro
     r.status = prox_rcc_validate(a);
     if (r.status == PROX_OK) r.status = prox_rcc_validate(b);
     if (r.status != PROX_OK) return r;
-    prox_rcc_result d = prox_rcc_distance(a, b);
-    prox_sat_result s = prox_rcc_sat(a, b);
+    prox_distance_result d = prox_rcc_distance(a, b);
+    prox_test_result s = prox_rcc_sat(a, b);
     prox_signed_result g = sup_rcc_signed_support(a, b); /* not prox_rcc_signed_distance: it uses the distance */
     if (d.status != PROX_OK) { r.status = d.status; return r; }
     if (s.status != PROX_OK) { r.status = s.status; return r; }
@@ -25,7 +25,7 @@ PROX_API prox_crosscheck_result prox_rcc_crosscheck(const prox_rcc *a, const pro
     r.scale = prox_rcc_pair_scale(a, b);
     double M = fmax(prox_v3_maxabs(a->base), prox_v3_maxabs(b->base));
     r.tol = 1e-12 * r.scale + 8.0 * DBL_EPSILON * M;
-    r.intersect_distance = d.interfere;
+    r.intersect_distance = d.intersect;
     r.intersect_sat = s.intersect;
     r.distance = d.distance;
     r.sd = g.sd;

@@ -82,9 +82,9 @@ static double gap(const sat_cyl *a, const sat_cyl *b, prox_vec3 delta, prox_vec3
     return fabs(prox_v3_dot(u, delta)) - hc(a, u) - hc(b, u);
 }
 
-static prox_sat_result separated(prox_vec3 d, prox_vec3 delta, double value, prox_sat_axis by)
+static prox_test_result separated(prox_vec3 d, prox_vec3 delta, double value, prox_sat_axis by)
 {
-    prox_sat_result r = {0};
+    prox_test_result r = {0};
     r.status = PROX_OK;
     r.intersect = 0;
     double n2 = prox_v3_norm2(d);
@@ -281,9 +281,9 @@ static int other_dirs(const sat_cyl *a, const sat_cyl *b, prox_vec3 delta, doubl
     return 0;
 }
 
-PROX_API prox_sat_result prox_rcc_sat(const prox_rcc *a, const prox_rcc *b)
+PROX_API prox_test_result prox_rcc_sat(const prox_rcc *a, const prox_rcc *b)
 {
-    prox_sat_result r = {0};
+    prox_test_result r = {0};
     r.status = fast_validate(a);
     if (r.status == PROX_OK) r.status = fast_validate(b);
     if (r.status != PROX_OK) return r;

@@ -17,7 +17,7 @@ prox_signed_result sup_rcc_signed_support(const prox_rcc *a, const prox_rcc *b)
 {
     prox_signed_result r = {0};
     /* the SAT validates both and gives a separating direction: the start of the local search */
-    prox_sat_result s = prox_rcc_sat(a, b);
+    prox_test_result s = prox_rcc_sat(a, b);
     if (s.status != PROX_OK) { r.status = s.status; return r; }
     prox_shape sa = prox_shape_from_rcc(*a), sb = prox_shape_from_rcc(*b);
     sup_body ba = sup_body_make(&sa), bb = sup_body_make(&sb);
@@ -27,9 +27,9 @@ prox_signed_result sup_rcc_signed_support(const prox_rcc *a, const prox_rcc *b)
 PROX_API prox_signed_result prox_rcc_signed_distance(const prox_rcc *a, const prox_rcc *b)
 {
     prox_signed_result r = {0};
-    prox_rcc_result d = prox_rcc_distance(a, b); /* validates both */
+    prox_distance_result d = prox_rcc_distance(a, b); /* validates both */
     if (d.status != PROX_OK) { r.status = d.status; return r; }
-    if (!d.interfere && d.distance > 0.0) {
+    if (!d.intersect && d.distance > 0.0) {
         r.status = PROX_OK;
         r.sd = d.distance;
         r.p1 = d.p1;
@@ -44,7 +44,7 @@ PROX_API prox_signed_result prox_rcc_signed_distance(const prox_rcc *a, const pr
             r.normal = prox_v3_scale(e, 1.0 / en);
             return r;
         }
-        prox_sat_result s = prox_rcc_sat(a, b);
+        prox_test_result s = prox_rcc_sat(a, b);
         r.normal = s.intersect ? prox_v3(0, 0, 1) : s.direction;
         return r;
     }
