@@ -2,7 +2,7 @@
  * force (dense sampling of circle a in long double with the closed-form closest point on b, then
  * golden-section refinement of every sampled local minimum), plus hand-made special cases. */
 #include "test_util.h"
-#include "distance/stationary.h"
+#include "core/circle.h"
 #include <float.h>
 
 typedef long double ld;

@@ -3,7 +3,7 @@
  * refinement; every local extremum of the sampled line distance must be among the returned stationary
  * angles, and every returned angle must be stationary. */
 #include "test_brute.h"
-#include "distance/stationary.h"
+#include "core/circle.h"
 
 /* Circle and segment in long double; the circle frame is the library's (angles are compared). */
 typedef struct prob {

@@ -2,7 +2,7 @@
  * point to the solid disk (closed form in long double) sampled densely over the circle angle and refined
  * by golden section; hand-made parallel, concentric, coaxial, crossing, touching, scaled and far cases. */
 #include "test_brute.h"
-#include "distance/stationary.h"
+#include "core/circle.h"
 
 typedef struct prob {
     lv3 c1, n1, c2, u2, v2, n2;

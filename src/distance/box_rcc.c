@@ -16,7 +16,7 @@
  * planes), each end disk with its rim by P(D, L) (Sec. 3.2-3.3, prox_disk_segment), edges pruned by a
  * capsule lower bound. Rim against face: the circle's lowest point along the face normal. */
 #include "distance/box_internal.h"
-#include "distance/stationary.h"
+#include "core/circle.h"
 
 #include <float.h>
 #include "prox/primitives.h"

@@ -1,5 +1,5 @@
 /* Circle frames: the angle parameter convention shared by every circle solver. */
-#include "distance/stationary.h"
+#include "core/circle.h"
 
 PROX_API void prox_circle_frame(const prox_circle *c, prox_vec3 *u, prox_vec3 *v)
 {

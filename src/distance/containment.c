@@ -9,7 +9,7 @@
  * axis: the farthest point from the axis of the ellipse the rim projects onto
  * (prox_circle_line_max_dist, circle_segment.c). */
 #include "distance/box_internal.h"
-#include "distance/stationary.h"
+#include "core/circle.h"
 #include "prox/support.h"
 
 static double box_point_clear(const prox_bframe *B, prox_vec3 x)

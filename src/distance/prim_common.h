@@ -6,7 +6,7 @@
 #ifndef PROX_DISTANCE_PRIM_COMMON_H
 #define PROX_DISTANCE_PRIM_COMMON_H
 
-#include "distance/stationary.h"
+#include "core/circle.h"
 
 /* Relative size (8 ulp x scene scale) below which the distance of a point from a circle's or surface's
  * axis counts as zero: every angle is then equidistant (the set case). */

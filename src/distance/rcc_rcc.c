@@ -38,7 +38,7 @@
 #include <stddef.h>
 
 #include "core/validate.h"
-#include "distance/stationary.h"
+#include "core/circle.h"
 #include "prox/distance.h"
 #include "prox/sat.h"
 

@@ -19,7 +19,7 @@
  * be settled returns 0 and the caller runs the global search of sup_engine.c. */
 #include "sup_engine.h"
 
-#include "distance/stationary.h"
+#include "core/circle.h"
 
 #include <float.h>
 

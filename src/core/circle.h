@@ -1,9 +1,10 @@
-/* Internal: stationary points of primitive-pair distance functions.
+/* Internal (core): circles with their frames, and the stationary points of the primitive-pair distance
+ * functions that involve circles (shared by every method that meets a rim).
  * The RCC-RCC query (rcc_rcc.c) needs every stationary point, not only the global minimum of a
  * primitive pair, because a local minimum of one primitive pair can be the global minimum of the
  * solids while the pair's own global minimum lies outside the finite cylinder. */
-#ifndef PROX_DISTANCE_STATIONARY_H
-#define PROX_DISTANCE_STATIONARY_H
+#ifndef PROX_CORE_CIRCLE_H
+#define PROX_CORE_CIRCLE_H
 
 #include "prox/primitives.h"
 

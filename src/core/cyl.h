@@ -1,0 +1,117 @@
+/* Internal (core): the one prepared representation of a solid right circular cylinder that every
+ * module uses: frame, support function and support point, exact point membership, closest point,
+ * and the rim circles.
+ *
+ * Support function (Eberly, "Intersection of Cylinders", Eq. 4):
+ *   h(D) = D.C + r |D - (D.W)W| + (h/2)|D.W|,  C the centre, W the unit axis, h the height, r the radius.
+ * The centred part hc(D) = h(D) - D.C is even in D (the body is centrally symmetric). */
+#ifndef PROX_CORE_CYL_H
+#define PROX_CORE_CYL_H
+
+#include <math.h>
+
+#include "core/circle.h"
+#include "prox/shapes.h"
+
+typedef struct prox_cyl {
+    prox_vec3 b;      /* base centre */
+    prox_vec3 w;      /* unit axis, base to top */
+    prox_vec3 c;      /* centre */
+    prox_vec3 cap[2]; /* centres of the base (0) and top (1) disks */
+    double h, hh, r;  /* height, half height, radius */
+} prox_cyl;
+
+/* A validated cylinder with height h = |axis|, in coordinates relative to origin (pass the zero
+ * vector for absolute coordinates; a pair far from the origin keeps its relative precision when
+ * both cylinders are prepared relative to a point of the pair: the subtraction is exact by Sterbenz). */
+static inline prox_cyl prox_cyl_make_h(const prox_rcc *c, double h, prox_vec3 origin)
+{
+    prox_cyl k;
+    k.h = h;
+    k.hh = 0.5 * h;
+    k.w = prox_v3(c->axis.x / h, c->axis.y / h, c->axis.z / h);
+    k.r = c->radius;
+    k.b = prox_v3_sub(c->base, origin);
+    k.c = prox_v3_mad(k.b, k.hh, k.w);
+    k.cap[0] = k.b;
+    k.cap[1] = prox_v3_mad(k.b, h, k.w);
+    return k;
+}
+
+/* The same with the height computed here. */
+static inline prox_cyl prox_cyl_make(const prox_rcc *c, prox_vec3 origin)
+{
+    return prox_cyl_make_h(c, prox_v3_norm(c->axis), origin);
+}
+
+/* Centre of the cylinder in absolute coordinates (base + axis / 2). */
+static inline prox_vec3 prox_rcc_center(const prox_rcc *c) { return prox_v3_mad(c->base, 0.5, c->axis); }
+
+/* Component of d perpendicular to the axis. Rejected twice: for d nearly along the axis one pass
+ * leaves an O(eps |d|) residual along w that normalising would blow up, putting a support point
+ * off the cylinder by up to r eps |d| / |perp|. */
+static inline prox_vec3 prox_cyl_perp(const prox_cyl *k, prox_vec3 d)
+{
+    prox_vec3 p = prox_v3_mad(d, -prox_v3_dot(d, k->w), k->w);
+    return prox_v3_mad(p, -prox_v3_dot(p, k->w), k->w);
+}
+
+/* Centred support function hc(d) = r |d - (d.w)w| + (h/2)|d.w| (d need not be unit). */
+static inline double prox_cyl_hc(const prox_cyl *k, prox_vec3 d)
+{
+    double dw = prox_v3_dot(d, k->w);
+    return k->r * prox_v3_norm(prox_v3_mad(d, -dw, k->w)) + k->hh * fabs(dw);
+}
+
+/* Support function h(d) = max over the cylinder of d.x. */
+static inline double prox_cyl_support(const prox_cyl *k, prox_vec3 d)
+{
+    return prox_v3_dot(d, k->c) + prox_cyl_hc(k, d);
+}
+
+/* Centred support point: x - c for a point x of the cylinder with d.x = h(d). d.w = 0 gives the
+ * middle of the side segment, d along the axis the centre of the disk (the middle of the support set). */
+static inline prox_vec3 prox_cyl_support_point_c(const prox_cyl *k, prox_vec3 d)
+{
+    double dw = prox_v3_dot(d, k->w);
+    prox_vec3 p = prox_v3_scale(k->w, dw > 0.0 ? k->hh : (dw < 0.0 ? -k->hh : 0.0));
+    prox_vec3 perp = prox_cyl_perp(k, d);
+    double n = prox_v3_norm(perp);
+    return n > 0.0 ? prox_v3_mad(p, k->r / n, perp) : p;
+}
+
+/* Support point in the cylinder's coordinates. */
+static inline prox_vec3 prox_cyl_support_point(const prox_cyl *k, prox_vec3 d)
+{
+    return prox_v3_add(k->c, prox_cyl_support_point_c(k, d));
+}
+
+/* Separation of the projections of A and B on the unit direction n (from A towards B):
+ * gap(n) = -h_B(-n) - h_A(n). By weak duality gap(n) <= distance(A, B) for every unit n. */
+static inline double prox_cyl_gap(const prox_cyl *a, const prox_cyl *b, prox_vec3 n)
+{
+    return -prox_cyl_support(b, prox_v3_neg(n)) - prox_cyl_support(a, n);
+}
+
+/* 1 when x lies in the closed solid cylinder enlarged by tol (tol >= 0, absolute). */
+static inline int prox_cyl_contains(const prox_cyl *k, prox_vec3 x, double tol)
+{
+    prox_vec3 d = prox_v3_sub(x, k->b);
+    double t = prox_v3_dot(d, k->w);
+    if (t < -tol || t > k->h + tol) return 0;
+    double rt = k->r + tol; /* squared comparison: no square root on this hot path */
+    return prox_v3_norm2(prox_v3_mad(d, -t, k->w)) <= rt * rt;
+}
+
+/* Closest point of the solid cylinder to x (x itself when inside). */
+prox_vec3 prox_cyl_closest(const prox_cyl *k, prox_vec3 x);
+
+/* Signed distance of x to the solid cylinder (negative inside), the boundary point q nearest to x
+ * and the outward unit normal n at q, with x = q + sd n. */
+double prox_cyl_signed(const prox_cyl *k, prox_vec3 x, prox_vec3 *q, prox_vec3 *n);
+
+/* Rim circle `end` (0 base, 1 top) with a frame: Duff et al.'s branch-free orthonormal basis of the
+ * axis ("Building an orthonormal basis, revisited", JCGT 2017); both rims share it. */
+prox_fcircle prox_cyl_rim(const prox_cyl *k, int end);
+
+#endif
