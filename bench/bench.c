@@ -1,4 +1,4 @@
-/* prox_bench: one benchmark program with a table of named cases (STYLE.md item 8, after Box2D's
+/* prox_bench: one benchmark program with a table of named cases (after Box2D's
  * benchmark/): the selected groups build their seeded inputs first, then every case is timed.
  * For each case and each of R >= 5 repeats: one batch pass gives the mean ns/query (total / n), one
  * pass timing every query on its own (clock overhead subtracted) gives the median and p99 ns/query;

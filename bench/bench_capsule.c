@@ -1,4 +1,4 @@
-/* The capsule approximation of a cylinder pair (issue 3 section 5, issue 7 section 1): each cylinder
+/* The capsule approximation of a cylinder pair : each cylinder
  * is replaced by the capsule around its axis segment with the same radius, and the distance is
  * segment-segment distance minus both radii (negative: the capsules overlap). It is exact only when
  * the closest points fall on the lateral surfaces; it is the cost floor prox aims at.

@@ -1,4 +1,4 @@
-/* prox_bench group "xcheck": the cross-check of the two cylinder methods (issue 4, section 3).
+/* prox_bench group "xcheck": the cross-check of the two cylinder methods (prox_rcc_crosscheck).
  * Setup (untimed) runs prox_rcc_crosscheck on n pairs of Agarwal's protocol (A fixed r = 2, h = 5;
  * B radius (0, 20], height (0, 50], base uniform in the ball of radius 25, uniform axis; n = --pairs,
  * 10^6 by default, 2*10^4 with --quick) and on n/10 pairs of the stress generator (bench/stress_gen.h,

@@ -67,7 +67,8 @@ extern const bench_method *const bench_prox_methods[];
 extern const bench_method bench_prox_distance_method;
 #endif
 
-/* The capsule approximation (segment-segment distance minus the radii), the floor of issue 3. */
+/* The capsule approximation (segment-segment distance minus the radii): the cost floor
+ * an exact cylinder distance is compared with. */
 extern const bench_method bench_capsule_method;
 /* A method without geometry: the cost of the benchmark's harness per query (bench_capsule.c). */
 extern const bench_method bench_harness_method;

@@ -1,10 +1,10 @@
-/* prox_bench group "peer": run time against error of the peer libraries on the same pairs as prox
- * (issue 7 section 1): the capsule approximation (always built) and, with -DPROX_BENCH_PEERS=ON,
+/* prox_bench group "peer": run time against error of the peer libraries on the same pairs as prox:
+ * the capsule approximation (always built) and, with -DPROX_BENCH_PEERS=ON,
  * FCL 0.7 (GJK, libccd and independent solvers, distance tolerances 1e-2..1e-12), Bullet 3 (GJK
  * with zero margin, EPA when overlapping) and libccd 2.1 (GJK / MPR verdicts with prox's cylinder
  * support function). Sets with a quad-precision or constructed reference: agarwal_public,
  * stress_public (tests/data) and the bench stress generator; FCL's default setting also
- * on the 10^6 pairs of Agarwal's protocol for the mean-time target of issue 3. */
+ * on the 10^6 pairs of Agarwal's protocol, the mean-time comparison of docs/PERFORMANCE.md. */
 #include "bench_pairs.h"
 #ifdef PROX_BENCH_PEERS
 #include "peers/peers.h"

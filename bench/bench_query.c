@@ -1,5 +1,5 @@
 /* prox_bench group "query": the generic pair API of include/prox/query.h and the query modes of the
- * scene/batch API (include/prox/scene.h) for every pair family (issue 5 section 5, issue 6 section 3).
+ * scene/batch API (include/prox/scene.h) for every pair family.
  * Families BOX-BOX, BOX-RCC, BOX-SPH, RCC-SPH, SPH-SPH, RCC-RCC; kinds: verdict (prox_shape_test),
  * distance (prox_shape_distance), signed distance (prox_shape_signed_distance), containment of A in
  * B and of B in A (prox_shape_contains); then prox_pair_query in each mode on the same pairs.

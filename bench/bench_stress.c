@@ -1,4 +1,4 @@
-/* prox_bench group "stress": the numerical stress families of bench/stress_gen.h (issue 7 section 2)
+/* prox_bench group "stress": the numerical stress families of bench/stress_gen.h
  * one by one, for every prox cylinder method, with the error against the constructed exact distance
  * (distance error, witness error, verdict mismatches) and the time per query. `--long` runs 10^5
  * pairs per family (the quick CI-sized version is tests/test_stress.c). */

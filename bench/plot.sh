@@ -1,6 +1,6 @@
 #!/bin/sh
 # Plots median ns/query against the worst (and p99) distance error relative to S, per method and
-# setting, from a prox_bench CSV: bench/plot.sh docs/perf/bench-quick.csv docs/perf/runtime-vs-error
+# setting, from a prox_bench CSV: bench/plot.sh docs/perf/bench.csv runtime-vs-error
 # (writes <out>-<set>.png for the sets agarwal_public and stress_public). Needs gnuplot (gnuplot-nox).
 set -eu
 CSV=$1

@@ -1,5 +1,5 @@
 /* Near-degenerate cylinder pairs with a known exact distance, shared (header-only) by the stress test
- * tests/test_stress.c and the long stress run of prox_bench (issue 7, section 2).
+ * tests/test_stress.c and the long stress run of prox_bench.
  *
  * Construction (the support-function slab argument): pick a unit normal n, a point pA of A's support
  * set in direction n and a point pB of B's support set in -n, and translate B so that pB = pA + gap n.
@@ -17,7 +17,7 @@
 
 #include "prox/prox.h"
 
-/* The families (issue 7, section 2). */
+/* The families: which features make the contact, and how the pair is placed. */
 enum {
     SG_RIM_RIM = 0,   /* generic normal and axes: rim against rim */
     SG_LAT_LAT,       /* crossing lateral surfaces, n = WA x WB */

@@ -1,7 +1,8 @@
-/* libFuzzer harness for the public queries (issue 7 section 3): any bytes -> two shapes -> every
- * query. Contract checked: no crash or hang; an OK status never comes with a NaN; valid shapes of
+/* libFuzzer harness for the public queries: any bytes -> two shapes -> every query (and, for two
+ * cylinders, the distance by the cylinder method chosen by bits 4-5 of the first byte). Contract checked: no crash or hang; an OK status never comes with a NaN; valid shapes of
  * moderate size (|coordinates| <= 1e100) get PROX_OK and finite answers; invalid ones a named error.
- * Byte layout: 1 byte selects the pair kinds, then raw IEEE doubles (missing bytes read as zero). */
+ * Byte layout: 1 byte selects the pair kinds (bits 0-1 and 2-3) and the cylinder method (bits 4-5:
+ * fast, closed-form, support, fast), then raw IEEE doubles (missing bytes read as zero). */
 #include <stdio.h>
 #include <string.h>
 
@@ -60,10 +61,10 @@ static double max_abs(const uint8_t *p, size_t n)
 static int finite3(prox_vec3 v) { return prox_v3_isfinite(v); }
 
 /* The cylinder-only queries. */
-static void fuzz_rcc(const prox_rcc *a, const prox_rcc *b, int moderate)
+static void fuzz_rcc(const prox_rcc *a, const prox_rcc *b, prox_method m, int moderate)
 {
     int valid = prox_rcc_validate(a) == PROX_OK && prox_rcc_validate(b) == PROX_OK;
-    prox_distance_result r = prox_rcc_distance(a, b);
+    prox_distance_result r = prox_rcc_distance_ex(a, b, m);
     CHECK(valid || r.status != PROX_OK);
     if (r.status == PROX_OK) CHECK(!isnan(r.distance) && r.distance >= 0);
     if (valid && moderate) CHECK(r.status == PROX_OK && isfinite(r.distance) && finite3(r.p1) && finite3(r.p2));
@@ -84,7 +85,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     size_t n = size - 1;
     int moderate = max_abs(p, n) <= 1e100;
     prox_shape a = make_shape(sel, p, n, 0), b = make_shape(sel >> 2, p, n, 13);
-    if (a.kind == PROX_SHAPE_RCC && b.kind == PROX_SHAPE_RCC) fuzz_rcc(&a.u.rcc, &b.u.rcc, moderate);
+    if (a.kind == PROX_SHAPE_RCC && b.kind == PROX_SHAPE_RCC) {
+        int m = (sel >> 4) & 3;
+        fuzz_rcc(&a.u.rcc, &b.u.rcc, m == 3 ? PROX_METHOD_FAST : (prox_method)m, moderate);
+    }
     int valid = prox_shape_validate(&a) == PROX_OK && prox_shape_validate(&b) == PROX_OK;
     prox_distance_result d = prox_shape_distance(&a, &b);
     CHECK(valid || d.status != PROX_OK);

@@ -18,7 +18,7 @@ command -v "$CC" > /dev/null || { echo "fuzz/run.sh: $CC not found (apt-get inst
 mkdir -p "$BUILD/obj"
 FLAGS="-std=c17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined -ffp-contract=off"
 FLAGS="$FLAGS -I$ROOT/include -I$ROOT/src -DPROX_STATIC -D_POSIX_C_SOURCE=200809L"
-LIBSRC=$(ls "$ROOT"/src/core/*.c "$ROOT"/src/distance/*.c "$ROOT"/src/sat/*.c "$ROOT"/src/scene/*.c 2>/dev/null)
+LIBSRC=$(ls "$ROOT"/src/*/*.c | grep -v '/src/cli/')
 CLISRC=$(ls "$ROOT"/src/cli/*.c | grep -v '/main.c$')
 LIBS="-lgsl -lgslcblas -lm"
 t0=$(date +%s)

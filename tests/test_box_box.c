@@ -155,10 +155,11 @@ static double off_box(const prox_box *b, prox_vec3 x)
     return d.intersect ? 0.0 : d.distance;
 }
 
-/* Regression: edges parallel within 1e-9 (nearly aligned bars, one rolled about its axis). The cross
- * product of two nearly parallel edges is a noisy axis, and an edge axis can tie a face axis (an edge
- * lying across a face) while its support edges do not cross: the witnesses were then 1e-4 off
- * (p2 - p1 != sd n). Depth against the long-double SAT brute force, witnesses in their boxes. */
+/* Edges parallel within 1e-9 (nearly aligned bars, one rolled about its axis). The cross product of
+ * two nearly parallel edges is a noisy axis, and an edge axis can tie a face axis (an edge lying
+ * across a face) while its support edges do not cross; witnesses taken from those edges would be
+ * ~1e-4 off (p2 - p1 != sd n). Guards: the depth against the long-double SAT brute force, and the
+ * witnesses in their boxes. */
 static void test_near_parallel_edges(void **st)
 {
     (void)st;
@@ -229,9 +230,10 @@ static void test_edge_across_face_tie(void **st)
     }
 }
 
-/* Regression (found by a seeded search of rolled, nearly aligned bars; x edges parallel within 3e-12):
- * the least SAT overlap came first from an edge axis tied with a face axis whose support edges do not
- * cross, and the witnesses were 1.3e-4 off (p2 - p1 != sd n). */
+/* A fixed pair of rolled, nearly aligned bars (x edges parallel within 3e-12) where the least SAT
+ * overlap is attained by an edge axis tied with a face axis whose support edges do not cross.
+ * Guards: the witnesses come from the axis that realises the depth (p2 - p1 = -sd n), not from the
+ * first tied axis, which would put them 1.3e-4 off. */
 static void test_tie_regression(void **st)
 {
     (void)st;

@@ -278,23 +278,26 @@ static void test_random_pruned_exact(void **st)
         }
         double tol = 1e-12 * scale;
         ld ref = brute_box_rcc(&b, &c);
-        /* kind 2 (an end disk tilted 1e-9 from a box face) once missed by 4.3e-10 x scale (seed 777,
-         * it 158): rim_face's lowest rim point left the rim's plane (docs/algorithms/box_speed.md). */
+        /* kind 2 (an end disk tilted 1e-9 from a box face) guards rim_face's lowest rim point: without
+         * a second rejection against the axis it leaves the rim's plane and the distance misses by
+         * 4.3e-10 x scale (it 158; docs/algorithms/box_speed.md). */
         assert_near(d.distance, (double)ref, tol);
         assert_near(prox_v3_dist(d.p1, d.p2), d.distance, tol);
         assert_true(off_box_rcc(&b, d.p1) <= tol);
         ld p2[3] = {d.p2.x, d.p2.y, d.p2.z};
-        assert_true(point_cyl_ld(&c, p2) <= (kind == 2 ? 1e-9 * scale : tol)); /* kind 2: same defect (it 802: 4e-12 x scale) */
+        /* kind 2: a point of a rim tilted 1e-9 carries that tilt's rounding (it 802: 4e-12 x scale) */
+        assert_true(point_cyl_ld(&c, p2) <= (kind == 2 ? 1e-9 * scale : tol));
         assert_true(d.certificate_gap <= d.distance + (kind == 2 ? 1e-9 * scale : tol));
         ++checked;
     }
     assert_true(checked > 800);
 }
 
-/* Regression (session 2): a needle (r 0.0034, h 596) whose top rim is 2.05e-8 from a long plate
- * (864 x 10.8 x 2.1) was reported touching: the radial clip of the plate's long edges against the
- * cylinder used B^2 - A C, which cancels to 1e-5 relative there. The gap is confirmed by the
- * independent support-function method. */
+/* A needle (r 0.0034, h 596) whose top rim is 2.05e-8 from a long plate (864 x 10.8 x 2.1). Guards
+ * the radial clip of the plate's long edges against the cylinder: solved with the discriminant
+ * B^2 - A C it cancels to 1e-5 relative here and calls the pair touching, so the clip is measured
+ * around the edge's closest approach. The gap is confirmed by the independent support-function
+ * method. */
 static void test_needle_beside_plate(void **st)
 {
     (void)st;
@@ -314,10 +317,10 @@ static void test_needle_beside_plate(void **st)
     assert_true(d.distance > 2e-8);
 }
 
-/* Regression (session 2): touching pairs 1e6 from the origin were reported 0.011 and 0.148 apart: the
- * rim-against-face candidate was dropped when the rounding of coordinates ~1e6 (~1e-10) made its
- * height slightly negative, and the next candidate won. Both touch within that rounding: the support
- * function method near the origin finds |sd| < 4e-11. */
+/* Touching pairs 1e6 from the origin, where differences of coordinates carry ~1e-10 of rounding.
+ * Guards the rim-against-face candidate: its height can come out slightly negative, and dropping it
+ * would let the next candidate win (0.011 and 0.148 apart). A height within that rounding is a
+ * touching contact: the support-function method near the origin finds |sd| < 4e-11 for both. */
 static void test_touching_far_from_origin(void **st)
 {
     (void)st;

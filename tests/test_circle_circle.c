@@ -130,7 +130,7 @@ static void check_pair(const prox_circle *a, const prox_circle *b, double tol_re
     prox_fcircle fb = prox_fcircle_make(b->center, prox_v3_normalize(b->normal), b->radius);
     double th[8];
     int n;
-    assert_int_equal(prox_circle_circle_stationary(&fa, &fb, th, &n), 0);
+    assert_int_equal(prox_circle_circle_stationary(&fa, &fb, PROX_ROOTS_CHAIN, th, &n), 0);
     for (int m = 0; m < nm; ++m) {
         prox_vec3 x = prox_fcircle_point(&fa, 0); /* locate the brute angle in fa's frame */
         ld t = angs[m];

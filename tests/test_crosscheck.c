@@ -62,18 +62,19 @@ static void test_crosscheck_random_protocol_a(void **state)
     assert_int_equal(bad, 0);
 }
 
-/* Disagreements found by the bench sweep (prox_bench --filter xcheck/) and the stress test, kept as
- * regressions (docs/algorithms/sat.md, section 3): 14 numbers each, A then B. */
+/* Pairs on which the two methods once disagreed, kept as regressions (docs/algorithms/sat.md,
+ * sections 1 and 3): 14 numbers each, A then B. */
 static const double k_regress[][14] = {
-    /* stress face-lat 1097 and 1981: support-function distance 3e-12 and 6e-12 short (kink snap
-     * accepted a direction up to 1e-12 x scale worse); distance method right (matches d_ref) */
+    /* face-lat contacts: the support-function distance 3e-12 and 6e-12 short when the kink snap
+     * accepted a direction up to 1e-12 x scale worse; guards the snap's rounding-only allowance */
     {-1.9244596523030593, -0.15847026808014331, 1.670198953027747, 0.05320900450888888, -0.57669300454955763,
      -0.68283441416857493, 1.8647243194252245, -1.7750143080651253, -0.17149182329895907, 2.0825276696458905,
      -0.16710654557117799, 0.20443824032112254, -0.18568143807933471, 0.29718892003000064},
     {-0.66019256381503855, 0.98102505315965116, -1.884254761281154, -0.19837599847034038, 1.270362153800517,
      -1.630892783070826, 4.6337288867151676, -4.2982735443830542, 0.98704118887747749, -0.82254316558860685,
      3.684176645307482, -0.30120400315180523, -0.68274898160044062, 0.48256952890631971},
-    /* stress parallel-side: SAT certified an overlap (-1.5e-11) for a pair 4.48e-12 apart (sliver portal) */
+    /* parallel-side contact 4.48e-12 apart: guards the rounding-safe portal bound (a sliver portal
+     * certified an overlap of -1.5e-11) */
     {-1.8028444187267914, -0.62093184734003781, 0.75836459171793669, -1.1463873783739271, 0.68674488099258157,
      -0.20092110598857102, 0.37366444355744322, -1.1362728725644018, 3.4579237431363969, 1.8074935273294432,
      3.0637226277367438, -1.8353271076341788, 0.53696206920929046, 3.6705734616502945},

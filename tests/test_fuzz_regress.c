@@ -1,5 +1,6 @@
-/* Regression tests for the inputs the fuzzers (fuzz/) found. Each test opens with the bug.
- * Contract (issue 7 section 3): valid shapes get PROX_OK with finite answers, never NaN. */
+/* Regression tests that replay fuzzer inputs (fuzz/crashes). Each test opens with the configuration
+ * it guards and why it is hard. Contract: valid shapes get PROX_OK with finite answers, never NaN;
+ * shapes outside the supported range get PROX_EINVAL_RANGE. */
 #include "test_util.h"
 
 #include "prox/query.h"
@@ -7,9 +8,9 @@
 #include "prox/sat.h"
 
 /* fuzz_queries crash-6fd5bd04: an RPP whose extents are subnormal (~3.5e-310) against a sphere
- * whose centre and radius are subnormal: both validate, yet prox_shape_distance answered PROX_OK
- * with a NaN distance and NaN points (and prox_shape_signed_distance a NaN sd).  Sizes that small are
- * now outside the supported range: every query must name that, and never answer with a NaN. */
+ * whose centre and radius are subnormal. Squares of such sizes underflow, and the solvers would
+ * return NaN distances and points with PROX_OK. Sizes that small are outside the supported range
+ * (docs/design.md, Tolerances): every query must name that, and never answer with a NaN. */
 static void test_fuzz_subnormal_rpp_sph(void **state)
 {
     (void)state;
@@ -31,8 +32,9 @@ static void test_fuzz_subnormal_rpp_sph(void **state)
     if (k.status == PROX_OK) assert_false(isnan(k.clearance));
 }
 
-/* fuzz_queries crash queries-sat-range-5d681c9b: prox_rcc_sat had its own quick validator and
- * answered PROX_OK for a cylinder of radius 2.8e-312 that prox_rcc_validate rejects as out of range. */
+/* fuzz_queries crash queries-sat-range-5d681c9b: a cylinder of radius 2.8e-312, out of range for
+ * prox_rcc_validate. Guards that every entry point (here the SAT verdict, which has a quick path of
+ * its own) applies the same validation and returns PROX_EINVAL_RANGE in both argument orders. */
 static void test_fuzz_sat_range(void **state)
 {
     (void)state;
@@ -45,8 +47,8 @@ static void test_fuzz_sat_range(void **state)
 }
 
 /* fuzz_queries crash-b3b3b7fc: a needle (r 9.4e-97, length 9.3e61) through a disk of radius 5.8e63 and
- * thickness 9.4e-96, valid shapes: the degree-8 root solve failed and its PROX_ENUMERIC reached the
- * caller. circle_circle now falls back on grid starts, so a valid pair always gets an answer. */
+ * thickness 9.4e-96, valid shapes, where the degree-8 root solve of a rim-rim pair can fail. Guards:
+ * a valid pair always gets a finite answer with PROX_OK, never that solver's PROX_ENUMERIC. */
 static void test_fuzz_extreme_needle_disk(void **state)
 {
     (void)state;
@@ -66,9 +68,9 @@ static void test_fuzz_extreme_needle_disk(void **state)
     assert_true(isfinite(g.sd));
 }
 
-/* fuzz_deck crash-62d7c137 (found by CI's 20 s fuzzing run): a surface-block card made only of
- * '&'-continued blank lines reached surface_card with no token, which read tok[0] uninitialised
- * (heap-use-after-free / SEGV under ASan).  Such a card holds nothing and is skipped. */
+/* fuzz_deck crash-62d7c137: a surface-block card made only of '&'-continued blank lines reaches the
+ * surface-card parser with no token (reading tok[0] would be an uninitialised read, a SEGV under
+ * ASan). Guards: such a card holds nothing and is skipped. */
 static void test_fuzz_deck_blank_card(void **state)
 {
     (void)state;
@@ -83,11 +85,10 @@ static void test_fuzz_deck_blank_card(void **state)
     prox_deck_free(&e);
 }
 
-/* fuzz_queries crash-95749060 (session 4, seed 4141; also in the session-3 code): a cylinder of radius
- * 2.8e-86 at the origin against one 1.3e64 away.  The rim-rim solve, normalised by the small radius,
- * overflowed to NaN; offer() took the NaN as its first best, and a NaN best refuses every later
- * candidate, so prox_rcc_distance answered PROX_OK with a NaN distance.  A non-finite candidate is
- * now never taken. */
+/* fuzz_queries crash-95749060: a cylinder of radius 2.8e-86 at the origin against one 1.3e64 away.
+ * The rim-rim solve, normalised by the small radius, overflows to NaN; a NaN taken as the first best
+ * candidate would refuse every later one (`d < NaN` is false) and the answer would be PROX_OK with a
+ * NaN distance. Guards: a non-finite candidate is never taken, in both argument orders. */
 static void test_fuzz_rim_rim_overflow(void **state)
 {
     (void)state;

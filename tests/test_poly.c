@@ -132,7 +132,7 @@ static void test_poly_deflation(void **state)
     assert_true(cnt >= 1);
     assert_near(r[0], -1, 1e-14);
     /* Not negligible either: all roots near 100..700 make c_8 = 1.5 tiny next to c_0 = 3e15 but
-     * dominant at the roots (regression: a plain max-coefficient test deflated it). */
+     * dominant at the roots (a plain max-coefficient test would deflate it). */
     const double w8[8] = {100, 200, -300, 400, 500, -600, 700, 150};
     double c8[9];
     build_poly(w8, 8, NULL, NULL, 0, 1.5, c8);

@@ -480,9 +480,9 @@ static void test_relation_internal_tangency(void **st)
  * a disjoint pair is moved along its proximal direction to a constructed gap (0 or 1e-12 .. 1e-2 x
  * scale); the distance must equal the gap (1e-12 of the scale, plus the rounding of the move) and
  * the verdict must say disjoint beyond 1e-9 x scale; for overlapping pairs, containment and the
- * relation must agree. Found in session 2: a needle beside a long plate reported touching at a
- * 2.4e-11 x scale gap (cancellation in the segment-cylinder clip), and BOX-RCC's touching band was
- * 3.5e-12 x scale. */
+ * relation must agree. Hard cases it covers: a needle beside a long plate at a 2.4e-11 x scale gap
+ * (the segment-cylinder clip cancels there), and BOX-RCC's touching band, which must stay within
+ * 1e-12 x scale. */
 static void test_extreme_near_touching(void **st)
 {
     (void)st;
@@ -523,11 +523,12 @@ static void test_extreme_near_touching(void **st)
 
 /* A box (or RPP) and a cylinder overlapping, moved apart by prox_shape_reposition: the translation
  * must leave them exactly `margin` apart.  The depth is the global minimum of h_A(D) + h_B(-D) over
- * unit D, a multi-start search for these kinds; sweeps found the support engine's ridge search
- * stopping in a shallower valley for ~6 in 10^4 such pairs (depth up to 2e-3 x scale too large).
- * The first pair below is one, its true depth bounded by a dense scan of directions (0.6215591 <
- * 0.6335954 reported before).  Before the ridge-search fix the loop below also failed (pair 3059,
- * 3.1e-5 x scale); reposition's measured correction now also covers a depth found too large. */
+ * unit D, a multi-start search for these kinds: a ridge search that samples too coarsely stops in a
+ * shallower valley (depth up to 2e-3 x scale too large, ~6 in 10^4 such pairs with 16 samples per
+ * ridge; docs/algorithms/sat.md). The first pair below is such a case, its true depth bounded by a
+ * dense scan of directions (0.6215591, against 0.6335954 from the shallower valley); the loop's pair
+ * 3059 misses by 3.1e-5 x scale with that search. Reposition's measured correction also covers a
+ * depth found too large. */
 static void test_reposition_box_cylinder(void **st)
 {
     (void)st;
@@ -582,9 +583,9 @@ static void test_reposition_box_cylinder(void **st)
 }
 
 /* A near-touching disjoint pair (gap 1.1e-6, a box with a 22-unit edge and an RPP) asked to move to
- * a margin of 0.92: its normal comes from witness points 1.1e-6 apart, off by ~3e-5 rad, and the
- * uncorrected move ended 3.5e-10 (1.6e-11 x scale) short of the margin.  prox_shape_reposition now
- * corrects the move once along the moved pair's own witness direction. */
+ * a margin of 0.92: its normal comes from witness points 1.1e-6 apart, off by ~3e-5 rad, so a move
+ * along it alone ends 3.5e-10 (1.6e-11 x scale) short of the margin. Guards the correction
+ * prox_shape_reposition makes once along the moved pair's own witness direction. */
 static void test_reposition_near_touching(void **st)
 {
     (void)st;

@@ -50,7 +50,7 @@ typedef struct set_stats {
     size_t kinds[8];
 } set_stats;
 
-/* Checks one reference set; every pair must meet the bar. */
+/* Checks one reference set; every pair must meet the accuracy bar (1e-12 S, tests/data/README.md). */
 static void check_reference_set(const char *name, set_stats *st)
 {
     char pp[512], rp[512];
@@ -346,9 +346,9 @@ static void test_rcc_regress_coaxial_noise(void **state)
     }
 }
 
-/* Regression: a needle (r = 0.0031) through a thin disk (stress_public pair 808).  No candidate point
- * lay inside the other solid, and plain alternating projections only approach the intersection
- * from outside, so the pair was reported disjoint at 0.0807; projections onto shrunk solids enter it. */
+/* A needle (r = 0.0031) through a thin disk (stress_public pair 808): no candidate point lies inside
+ * the other solid, and plain alternating projections only approach the intersection from outside
+ * (they would end at a false distance of 0.0807); guards that the common-point search enters it. */
 static void test_rcc_regress_needle_through_disk(void **state)
 {
     (void)state;
@@ -362,9 +362,9 @@ static void test_rcc_regress_needle_through_disk(void **state)
     assert_true(cyl_sdf(&a, r.p1) <= 0.0 && cyl_sdf(&b, r.p1) <= 0.0);
 }
 
-/* Regression: nearly coaxial stacked faces 3.1e-8 apart (bench stress generator, seed 4242).  The feet
- * of the common perpendicular of nearly parallel axes are ill-conditioned; the point between them was
- * taken as a common point without checking it, a false overlap.  Witnesses are now verified. */
+/* Nearly coaxial stacked faces 3.1e-8 apart (bench stress generator, seed 4242): the feet of the
+ * common perpendicular of nearly parallel axes are ill-conditioned, and the point between them is not
+ * a common point; guards that every overlap witness is checked against both solids. */
 static void test_rcc_regress_unverified_witness(void **state)
 {
     (void)state;
@@ -392,10 +392,10 @@ static void test_rcc_bad_input(void **state)
     assert_int_equal(prox_rcc_distance(NULL, &a).status, PROX_EINVAL_ARG);
 }
 
-/* Every fault in either argument of a crossing (Case 1) pair, the pairs the raw path's window
- * admits without calling the validators: the window must turn each away to the validator's code,
- * and valid pairs just outside the window (tiny radii, far bases) must still be answered. */
-static void test_rcc_bad_input_case1_window(void **state)
+/* Every fault in either argument of a crossing (Case 1) pair, the pairs that end earliest: each must
+ * be turned away with the validator's code, and valid pairs at extreme sizes (tiny radii, far bases)
+ * must still be answered. */
+static void test_rcc_bad_input_case1(void **state)
 {
     (void)state;
     const prox_rcc a = {prox_v3(0, 0, -2), prox_v3(0, 0, 4), 1};
@@ -423,7 +423,7 @@ static void test_rcc_bad_input_case1_window(void **state)
         assert_int_equal(r1.status, bad[k].want);
         assert_int_equal(r2.status, bad[k].want);
     }
-    /* valid, outside the window: radii 1e-30 (squared below 1e-40), bases 1e30 apart */
+    /* valid at extreme sizes: radii 1e-30 (squared below 1e-40), bases 1e30 apart */
     const double f = 1e-30;
     prox_rcc as = {prox_v3_scale(a.base, f), prox_v3_scale(a.axis, f), a.radius * f};
     prox_rcc gs = {prox_v3_scale(good.base, f), prox_v3_scale(good.axis, f), good.radius * f};
@@ -452,7 +452,7 @@ int main(void)
         cmocka_unit_test(test_rcc_regress_needle_through_disk),
         cmocka_unit_test(test_rcc_regress_unverified_witness),
         cmocka_unit_test(test_rcc_bad_input),
-        cmocka_unit_test(test_rcc_bad_input_case1_window),
+        cmocka_unit_test(test_rcc_bad_input_case1),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -148,11 +148,11 @@ static prox_rcc case1_partner(const prox_rcc *big, prox_vec3 w, prox_vec3 wa, do
     return (prox_rcc){prox_v3_mad(foot, -s, wa), prox_v3_scale(wa, ha), ra};
 }
 
-/* Nesting flags of overlapping Case-1 pairs (the feet of the common perpendicular on both axes, which
- * prox decides before any preparation, with bounds on the farthest point of each rim) against the
- * brute force.  The small cylinder's foot is put less than rb from the big one's along the common
- * normal, so its rims straddle the big cylinder's side as often as they sit inside; the radii and
- * tilts span the band where the bounds leave the decision to the exact test.  Both argument orders. */
+/* Nesting flags of overlapping Case-1 pairs (the feet of the common perpendicular on both axes, the
+ * pairs that end earliest) against the brute force.  The small cylinder's foot is put less than rb
+ * from the big one's along the common normal, so its rims straddle the big cylinder's side as often
+ * as they sit inside; the radii and tilts span the band where the quick bounds leave the decision to
+ * the exact test.  Both argument orders. */
 static void test_rcc_case1_nesting(void **state)
 {
     (void)state;
@@ -184,8 +184,8 @@ static void test_rcc_case1_nesting(void **state)
 /* Nesting flags of overlapping Case-1 pairs right at the radial boundary: the big cylinder's radius
  * is set to the small one's farthest rim distance from its axis (long double) times 1 +- delta,
  * delta log-uniform in [1e-8, 1e-2], with room to spare axially, so the answer flips with the sign
- * and the decision falls in or near the band between the root-free bounds.  Weakening either
- * bound by a relative 1e-3 fails this test. */
+ * and the decision falls in or near the band between the quick accept and reject bounds of the
+ * containment test, where only the exact farthest point decides. */
 static void test_rcc_case1_nesting_boundary(void **state)
 {
     (void)state;
@@ -218,9 +218,9 @@ static void test_rcc_case1_nesting_boundary(void **state)
     assert_int_equal(tally.bad, 0);
 }
 
-/* Case-1 pairs (nested, overlapping, disjoint) scaled by 2^-120 and 2^120, exact binary scalings that
- * move every squared length outside the range where prox decides Case 1 from the raw input (the
- * general path answers them): distance, points and nesting flags must scale exactly with the pair. */
+/* Case-1 pairs (nested, overlapping, disjoint) scaled by 2^-120 and 2^120, exact binary scalings
+ * that take squared lengths and products of them far outside the range of doubles: distance, points
+ * and nesting flags must scale exactly with the pair. */
 static void test_rcc_case1_extreme_scale(void **state)
 {
     (void)state;
@@ -256,13 +256,13 @@ static void test_rcc_case1_extreme_scale(void **state)
     assert_int_equal(bad, 0);
 }
 
-/* The general path's Case-1 answer against the raw path's, on pairs where the common perpendicular
- * is short and the bases far apart (a small cylinder beside a long one): the pair scaled by 2^-80
- * leaves the raw window and goes through the general path, and both must agree to 1e-12 S.  The
- * general path's S-S normal used to come from alternating rejections, whose residual along B's axis
- * times |(bB - bA).wB| put it up to 1.2e-11 S off, too far or too near (114 of these 20000 pairs);
- * the first pair below is one from a broader draw, with its distance from a 40-digit evaluation. */
-static void test_rcc_case1_general_path(void **state)
+/* Case-1 pairs where the common perpendicular is short and the bases far apart (a small cylinder
+ * beside a long one), against the independent support method to 1e-12 S, and against the pair
+ * scaled by 2^-80.  An S-S normal taken from alternating rejections, whose residual along B's axis
+ * is multiplied by |(bB - bA).wB|, puts the distance up to 1.2e-11 S off, too far or too near (114 of
+ * these 20000 pairs); the first pair below is one from a broader draw, with its distance from a
+ * 40-digit evaluation. */
+static void test_rcc_case1_short_perpendicular(void **state)
 {
     (void)state;
     const double f = 0x1p-80;
@@ -291,21 +291,25 @@ static void test_rcc_case1_general_path(void **state)
         prox_rcc a2 = sg_scale(a, f);
         prox_rcc b2 = sg_scale(b, f);
         prox_distance_result e = prox_rcc_distance(&a2, &b2);
-        double err = fabs(e.distance / f - d.distance) / prox_rcc_pair_scale(&a, &b);
+        prox_distance_result g = prox_rcc_distance_ex(&a, &b, PROX_METHOD_SUPPORT);
+        double S = prox_rcc_pair_scale(&a, &b);
+        double err = fmax(fabs(e.distance / f - d.distance), fabs(g.distance - d.distance)) / S;
         worst = err > worst ? err : worst;
         if (!(err <= 1e-12) && bad++ < 5)
-            print_error("pair %d: raw %.17g general %.17g (%.3g S)\n", i, d.distance, e.distance / f, err);
+            print_error("pair %d: %.17g, scaled %.17g, support method %.17g (%.3g S)\n", i, d.distance,
+                        e.distance / f, g.distance, err);
     }
-    printf("# %d short-perpendicular Case-1 pairs, general path against raw: worst %.3g S, failures %d\n",
+    printf("# %d short-perpendicular Case-1 pairs against the support method and the scaled pair: worst "
+           "%.3g S, failures %d\n",
            n, worst, bad);
     assert_int_equal(bad, 0);
 }
 
 /* Extreme aspect ratios (radii and heights log-uniform over 1e-3 .. 1e3, the base of B up to 1e3
  * times A's size away): the verdict agrees with the certified SAT, disjoint distances with the
- * independent support-function method to 1e-12 S, and overlap witnesses lie in both solids. Session 1 reported
- * a positive distance for needles through pancakes and crossing pancakes (4 in these 1e5 pairs):
- * the common-point search did not enter intersections that thin. */
+ * independent support-function method to 1e-12 S, and overlap witnesses lie in both solids. Guards the
+ * common-point search on intersections too thin for projections to enter quickly (needles through
+ * pancakes, crossing pancakes: 4 in these 1e5 pairs). */
 static void test_rcc_random_extreme_aspect(void **state)
 {
     (void)state;
@@ -352,7 +356,7 @@ int main(void)
         cmocka_unit_test(test_rcc_case1_nesting),
         cmocka_unit_test(test_rcc_case1_nesting_boundary),
         cmocka_unit_test(test_rcc_case1_extreme_scale),
-        cmocka_unit_test(test_rcc_case1_general_path),
+        cmocka_unit_test(test_rcc_case1_short_perpendicular),
         cmocka_unit_test(test_rcc_random_extreme_aspect),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -1,4 +1,4 @@
-/* Numerical stress of the cylinder-cylinder queries (issue 7 section 2): the near-degenerate families
+/* Numerical stress of the cylinder-cylinder queries: the near-degenerate families
  * of bench/stress_gen.h (parallel / antiparallel / perpendicular axes within 1e-15..1e-3 rad, gaps
  * 0 and 1e-12..1e-3, rim-rim, rim-face, face-face, lateral contacts, nearly coaxial end circles,
  * r/h from 1e-6 to 1e6, size ratios 1e3..1e6, scenes scaled by 1e-8..1e8 and moved 1e3..1e8 from

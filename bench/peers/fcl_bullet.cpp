@@ -1,8 +1,8 @@
 // prox_bench peers FCL 0.7 and Bullet 3.24 (Debian packages), for the run time against error
-// comparison of issue 7. Each cylinder is given to the peer in its own frame: centred, axis along z
-// (FCL Cylinder(radius, length); Bullet btCylinderShapeZ with half extents (r, r, h/2) and margin 0),
-// placed by a rigid transform taking z to the RCC axis. Bullet in Debian uses single-precision
-// btScalar, so its answers carry float rounding.
+// comparison (docs/PERFORMANCE.md). Each cylinder is given to the peer in its own frame: centred,
+// axis along z (FCL Cylinder(radius, length); Bullet btCylinderShapeZ with half extents (r, r, h/2)
+// and margin 0), placed by a rigid transform taking z to the RCC axis. Bullet in Debian uses
+// single-precision btScalar, so its answers carry float rounding.
 #include <cmath>
 
 #include <fcl/fcl.h>

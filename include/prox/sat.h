@@ -2,8 +2,11 @@
 /// The support-function method for two solid cylinders: the intersection verdict by separating axes
 /// (Eberly, "Intersection of Cylinders": the axis tests, then Minkowski portal refinement with a
 /// certified bound where no axis test decides), and signed distance, distance and penetration depth
-/// by certified minimisation of h_A(D) + h_B(-D) over unit directions D. It uses nothing of the
-/// closed-form method but the geometric core, so that prox_rcc_crosscheck compares independent answers.
+/// by certified minimisation of h_A(D) + h_B(-D) over unit directions D. The support method
+/// (prox_rcc_sat, prox_rcc_distance_support) uses nothing of the fast or closed-form method but the
+/// geometric core, so that prox_rcc_crosscheck compares independent answers; prox_rcc_signed_distance
+/// and prox_rcc_crosscheck compose the methods (the fast distance when disjoint, the support method's
+/// depth when overlapping).
 #ifndef PROX_SAT_H
 #define PROX_SAT_H
 
@@ -32,7 +35,10 @@ PROX_API prox_test_result prox_rcc_sat(const prox_rcc *a, const prox_rcc *b);
 /// depth when overlapping, with the normal and witness points.
 PROX_API prox_signed_result prox_rcc_signed_distance(const prox_rcc *a, const prox_rcc *b);
 /// Distance and proximal points by the support-function method alone (PROX_METHOD_SUPPORT):
-/// prox_rcc_distance_ex(a, b, PROX_METHOD_SUPPORT) calls this.
+/// prox_rcc_distance_ex(a, b, PROX_METHOD_SUPPORT) calls this. Disjoint pairs: distance = |p2 - p1|
+/// for the closest pair of the support sets along the optimal normal, certificate_gap the lower bound
+/// along it. Overlapping pairs: a common point checked in both solids and the containment flags; the
+/// Agarwal fields (pair, features, case) stay zero.
 PROX_API prox_distance_result prox_rcc_distance_support(const prox_rcc *a, const prox_rcc *b);
 
 /// Runs the closed-form method and the support method (which share only the geometric core) and

@@ -222,6 +222,29 @@ static int run_check(check_run *run)
     return 0;
 }
 
+int prox_check_report(const char *path, double clearance, int all, int json, FILE *out, prox_status *st)
+{
+    check_opts o = {.path = path, .clearance = clearance, .all = all, .json = json};
+    prox_deck deck = {0};
+    *st = prox_deck_read_file(o.path, &deck);
+    if (*st != PROX_OK) {
+        prox_deck_free(&deck);
+        return 2;
+    }
+    check_run run = {.o = &o, .deck = &deck};
+    int code = 2;
+    if (run_check(&run)) *st = run.rep.status != PROX_OK ? run.rep.status : PROX_ENOMEM;
+    else {
+        if (o.json) write_json(out, &run);
+        else write_table(out, &run);
+        code = (deck.nerrors || run.solver_errors) ? 2 : (run.ncrossing ? 1 : 0);
+    }
+    free(run.body_of);
+    prox_scene_report_free(&run.rep);
+    prox_deck_free(&deck);
+    return code;
+}
+
 int prox_cli_check(int argc, char **argv)
 {
     check_opts o = {0};
@@ -230,26 +253,8 @@ int prox_cli_check(int argc, char **argv)
         check_usage(pr > 0 ? stdout : stderr);
         return pr > 0 ? 0 : 2;
     }
-    prox_deck deck = {0};
-    prox_status st = prox_deck_read_file(o.path, &deck);
-    if (st != PROX_OK) {
-        fprintf(stderr, "prox check: %s\n", prox_status_str(st));
-        prox_deck_free(&deck);
-        return 2;
-    }
-    check_run run = {.o = &o, .deck = &deck};
-    if (run_check(&run)) {
-        fprintf(stderr, "prox check: %s\n", prox_status_str(run.rep.status != PROX_OK ? run.rep.status : PROX_ENOMEM));
-        free(run.body_of);
-        prox_scene_report_free(&run.rep);
-        prox_deck_free(&deck);
-        return 2;
-    }
-    if (o.json) write_json(stdout, &run);
-    else write_table(stdout, &run);
-    int code = (deck.nerrors || run.solver_errors) ? 2 : (run.ncrossing ? 1 : 0);
-    free(run.body_of);
-    prox_scene_report_free(&run.rep);
-    prox_deck_free(&deck);
+    prox_status st = PROX_OK;
+    int code = prox_check_report(o.path, o.clearance, o.all, o.json, stdout, &st);
+    if (st != PROX_OK) fprintf(stderr, "prox check: %s\n", prox_status_str(st));
     return code;
 }

@@ -4,6 +4,7 @@
 #include <gsl/gsl_errno.h>
 
 #include "cli/cli.h"
+#include "prox/version.h"
 
 static void usage(FILE *f)
 {
@@ -11,7 +12,8 @@ static void usage(FILE *f)
                "commands:\n"
                "  pairs     cylinder pairs on stdin (14 numbers a line) -> distance and proximal points\n"
                "  check     MCNP deck -> crossing, touching, nested and close bodies (prox check DECK --help)\n"
-               "  help      this text\n");
+               "  help      this text\n"
+               "  --version the version of prox\n");
 }
 
 int main(int argc, char **argv)
@@ -20,6 +22,10 @@ int main(int argc, char **argv)
     if (argc < 2) {
         usage(stderr);
         return 2;
+    }
+    if (strcmp(argv[1], "--version") == 0 || strcmp(argv[1], "version") == 0) {
+        printf("prox %s\n", prox_version());
+        return 0;
     }
     if (strcmp(argv[1], "pairs") == 0) return prox_cli_pairs(argc - 1, argv + 1);
     if (strcmp(argv[1], "check") == 0) return prox_cli_check(argc - 1, argv + 1);

@@ -12,7 +12,6 @@
 
 #include "cli/cli.h"
 #include "prox/prox.h"
-#include "prox/sat.h"
 
 typedef enum pairs_mode { MODE_DISTANCE, MODE_SIGNED, MODE_TEST } pairs_mode;
 
@@ -97,8 +96,29 @@ static int cmp_double(const void *x, const void *y)
     return (a > b) - (a < b);
 }
 
+/* Signed distance by the chosen method: the support method's own (support.h) or the library's
+ * composition (sat.h: the exact distance when disjoint, the support-function depth when overlapping). */
+static prox_signed_result signed_by(const prox_rcc *a, const prox_rcc *b, prox_method m)
+{
+    if (m != PROX_METHOD_SUPPORT) return prox_rcc_signed_distance(a, b);
+    prox_shape sa = prox_shape_from_rcc(*a), sb = prox_shape_from_rcc(*b);
+    return prox_shape_signed_distance_support(&sa, &sb);
+}
+
+/* Intersection verdict by the chosen method: the separating axes for the support method, the
+ * distance query's verdict otherwise. */
+static prox_test_result test_by(const prox_rcc *a, const prox_rcc *b, prox_method m)
+{
+    if (m == PROX_METHOD_SUPPORT) return prox_rcc_sat(a, b);
+    prox_distance_result d = prox_rcc_distance_ex(a, b, m);
+    prox_test_result t = {0};
+    t.status = d.status;
+    t.intersect = d.status == PROX_OK && d.intersect;
+    return t;
+}
+
 /* Median over repeats of the in-memory query loop, in ns per pair (parsing and printing excluded). */
-static double time_queries(const pair_list *l, pairs_mode mode)
+static double time_queries(const pair_list *l, pairs_mode mode, prox_method m)
 {
     enum { REPEATS = 7 };
     double t[REPEATS];
@@ -106,9 +126,9 @@ static double time_queries(const pair_list *l, pairs_mode mode)
     for (int r = 0; r < REPEATS; ++r) {
         double t0 = now_ns();
         for (size_t i = 0; i < l->n; ++i) {
-            if (mode == MODE_DISTANCE) sink += prox_rcc_distance(&l->a[i], &l->b[i]).distance;
-            else if (mode == MODE_SIGNED) sink += prox_rcc_signed_distance(&l->a[i], &l->b[i]).sd;
-            else sink += prox_rcc_sat(&l->a[i], &l->b[i]).intersect;
+            if (mode == MODE_DISTANCE) sink += prox_rcc_distance_ex(&l->a[i], &l->b[i], m).distance;
+            else if (mode == MODE_SIGNED) sink += signed_by(&l->a[i], &l->b[i], m).sd;
+            else sink += test_by(&l->a[i], &l->b[i], m).intersect;
         }
         t[r] = (now_ns() - t0) / (double)(l->n ? l->n : 1);
     }
@@ -118,10 +138,10 @@ static double time_queries(const pair_list *l, pairs_mode mode)
 }
 
 /* Runs one query and prints its line; returns 0 on a library error (reported with the line). */
-static int answer(const prox_rcc *a, const prox_rcc *b, pairs_mode mode, long lineno)
+static int answer(const prox_rcc *a, const prox_rcc *b, pairs_mode mode, prox_method m, long lineno)
 {
     if (mode == MODE_DISTANCE) {
-        prox_distance_result r = prox_rcc_distance(a, b);
+        prox_distance_result r = prox_rcc_distance_ex(a, b, m);
         if (r.status != PROX_OK) goto fail_status;
         printf("%.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", r.distance, r.p1.x, r.p1.y, r.p1.z, r.p2.x,
                r.p2.y, r.p2.z);
@@ -131,7 +151,7 @@ static int answer(const prox_rcc *a, const prox_rcc *b, pairs_mode mode, long li
         return 0;
     }
     if (mode == MODE_SIGNED) {
-        prox_signed_result r = prox_rcc_signed_distance(a, b);
+        prox_signed_result r = signed_by(a, b, m);
         if (r.status != PROX_OK) {
             fprintf(stderr, "prox pairs: line %ld: %s\n", lineno, prox_status_str(r.status));
             return 0;
@@ -140,7 +160,7 @@ static int answer(const prox_rcc *a, const prox_rcc *b, pairs_mode mode, long li
                r.p2.z);
         return 1;
     }
-    prox_test_result r = prox_rcc_sat(a, b);
+    prox_test_result r = test_by(a, b, m);
     if (r.status != PROX_OK) {
         fprintf(stderr, "prox pairs: line %ld: %s\n", lineno, prox_status_str(r.status));
         return 0;
@@ -151,11 +171,14 @@ static int answer(const prox_rcc *a, const prox_rcc *b, pairs_mode mode, long li
 
 static void pairs_usage(FILE *f)
 {
-    fprintf(f, "usage: prox pairs [--signed | --test] [--time] < pairs.txt\n"
+    fprintf(f, "usage: prox pairs [--signed | --test] [--method fast|closed-form|support] [--time] < pairs.txt\n"
                "  each input line: bAx bAy bAz aAx aAy aAz rA bBx bBy bBz aBx aBy aBz rB\n"
                "  default   writes 'd p1x p1y p1z p2x p2y p2z' (distance, proximal points)\n"
                "  --signed  writes 'sd p1x p1y p1z p2x p2y p2z' (negative sd = -penetration depth)\n"
                "  --test    writes 1 (intersect) or 0 (separated)\n"
+               "  --method  the cylinder method: fast (default: prediction + certificate), closed-form\n"
+               "            (Agarwal's complete primitive decomposition, degree-8 roots by GSL) or support\n"
+               "            (separating axes and support-function optimisation); all three are exact\n"
                "  --time    also prints 'time_ns_per_pair X' on stderr (median of 7 repeats)\n");
 }
 
@@ -171,9 +194,19 @@ static int check_cyl(const prox_rcc *c, const char *name, long lineno)
 int prox_cli_pairs(int argc, char **argv)
 {
     pairs_mode mode = MODE_DISTANCE;
+    prox_method method = PROX_METHOD_FAST;
     int timing = 0;
     for (int i = 1; i < argc; ++i) {
         if (strcmp(argv[i], "--time") == 0) timing = 1;
+        else if (strcmp(argv[i], "--method") == 0 || strncmp(argv[i], "--method=", 9) == 0) {
+            const char *name = argv[i][8] == '=' ? argv[i] + 9 : (i + 1 < argc ? argv[++i] : NULL);
+            if (!name || !prox_method_parse(name, &method)) {
+                fprintf(stderr, "prox pairs: --method needs fast, closed-form or support (got '%s')\n",
+                        name ? name : "");
+                pairs_usage(stderr);
+                return 2;
+            }
+        }
         else if (strcmp(argv[i], "--signed") == 0) mode = MODE_SIGNED;
         else if (strcmp(argv[i], "--test") == 0) mode = MODE_TEST;
         else if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
@@ -205,7 +238,7 @@ int prox_cli_pairs(int argc, char **argv)
             ++errors;
             continue;
         }
-        if (!answer(&a, &b, mode, lineno)) {
+        if (!answer(&a, &b, mode, method, lineno)) {
             ++errors;
             continue;
         }
@@ -216,7 +249,7 @@ int prox_cli_pairs(int argc, char **argv)
         }
     }
     free(line);
-    if (timing) fprintf(stderr, "time_ns_per_pair %.1f\n", time_queries(&list, mode));
+    if (timing) fprintf(stderr, "time_ns_per_pair %.1f\n", time_queries(&list, mode, method));
     free(list.a);
     free(list.b);
     if (errors) fprintf(stderr, "prox pairs: %d line(s) with errors\n", errors);

@@ -6,9 +6,11 @@
 
 #include <math.h>
 
+#include "core/tol.h"
 #include "prox/shapes.h"
 
-/* a / s by components: unlike a * (1 / s) it stays finite for subnormal s (fuzz crash-6fd5bd04). */
+/* a / s by components: unlike a * (1 / s) it stays finite for subnormal s (a
+ * fuzz regression input: a subnormal edge length made 1 / s overflow). */
 static inline prox_vec3 prox_v3_divs(prox_vec3 a, double s) { return prox_v3(a.x / s, a.y / s, a.z / s); }
 
 typedef struct prox_bframe {
@@ -186,7 +188,7 @@ static inline double prox_seg_seg(prox_vec3 p1, prox_vec3 q1, prox_vec3 p2, prox
             double b = prox_v3_dot(d1, d2);
             double denom = a * e - b * b;
             /* Non-parallel: unconstrained s clamped; parallel (denom tiny): any s, take 0. */
-            if (denom > 1e-14 * a * e) {
+            if (denom > PROX_TOL_SEG_PARALLEL2 * a * e) {
                 s = (b * fb - c * e) / denom;
                 s = s < 0.0 ? 0.0 : (s > 1.0 ? 1.0 : s);
             }
@@ -213,7 +215,7 @@ static inline double prox_seg_seg(prox_vec3 p1, prox_vec3 q1, prox_vec3 p2, prox
      * endpoint-to-segment pairs are offered as well, and the nearest pair of all is returned. */
     if (a > 0.0 && e > 0.0) {
         double b = prox_v3_dot(d1, d2);
-        if (a * e - b * b <= 1e-6 * a * e) {
+        if (a * e - b * b <= PROX_TOL_WELL_COND2 * a * e) {
             prox_vec3 ends[4] = {p1, q1, p2, q2};
             for (int k = 0; k < 4; ++k) {
                 int on1 = k < 2; /* the endpoint is on segment 1: project it onto segment 2 */

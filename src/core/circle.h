@@ -6,6 +6,7 @@
 #ifndef PROX_CORE_CIRCLE_H
 #define PROX_CORE_CIRCLE_H
 
+#include "core/poly.h"
 #include "prox/primitives.h"
 
 /* A circle with its frame: point(theta) = c + r (cos theta u + sin theta v); n = u x v. */
@@ -38,7 +39,7 @@ static inline prox_unit2 prox_unit2_step(prox_unit2 a, double d)
     return b;
 }
 
-/* Builds the frame with the same convention as prox_circle_frame (n must be unit). */
+/* Builds the frame with the same convention as prox_circle_frame (n must be unit); core/circle.c. */
 prox_fcircle prox_fcircle_make(prox_vec3 center, prox_vec3 unit_normal, double radius);
 static inline prox_vec3 prox_fcircle_point(const prox_fcircle *c, double th)
 {
@@ -53,7 +54,9 @@ static inline prox_vec3 prox_fcircle_at(const prox_fcircle *c, prox_unit2 a)
 /* Every stationary angle of f(theta) = dist^2(point(theta), line) for the infinite line through p
  * with unit direction w (Agarwal Sec. 3.3, quartic in tan(theta/2); the angle pi is included when it
  * is stationary). Angles are polished by Newton on f'(theta) and returned in th[0..count-1], count <= 4.
- * Returns 1 when f is constant (line along the circle's axis): then count = 0. */
+ * Returns 1 when f is constant (line along the circle's axis): then count = 0; -PROX_ENUMERIC when the
+ * quartic cannot be solved (then count = 0: callers must not read it as the constant case).
+ * Implemented in core/circle_line.c with the two below. */
 int prox_circle_line_stationary(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, double th[4], int *count);
 
 /* A stationary angle of the same function near a0 (Newton only, trig-free): the RCC-RCC fast path,
@@ -63,7 +66,8 @@ prox_unit2 prox_circle_line_local(const prox_fcircle *c, prox_vec3 p, prox_vec3 
 /* The parameter interval [*s0, *s1] within [0, 1] of the segment p + s (q - p) that lies in the solid
  * cylinder (base, unit axis w, height h, radius r) enlarged by tol; 0 when they do not meet. The
  * radial part is measured around the closest approach to the axis, not by the discriminant
- * B^2 - AC, which cancels for a long segment passing a thin cylinder. */
+ * B^2 - AC, which cancels for a long segment passing a thin cylinder. Implemented in core/cyl.c
+ * (prox_cyl_clip_segment there takes a prepared prox_cyl). */
 int prox_segment_clip_solid_cyl(prox_vec3 p, prox_vec3 q, prox_vec3 base, prox_vec3 w, double h, double r, double tol,
                                 double *s0, double *s1);
 
@@ -74,12 +78,15 @@ int prox_segment_clip_solid_cyl(prox_vec3 p, prox_vec3 q, prox_vec3 base, prox_v
 double prox_circle_line_max_dist(prox_vec3 centre, prox_vec3 unit_normal, double radius, prox_vec3 p, prox_vec3 w);
 
 /* Every stationary angle theta_a on circle a of g(theta_a) = dist^2(point_a(theta_a), circle b)
- * (Agarwal Sec. 3.5, degree 8 in tan(theta_a/2), rooted by prox_poly_real_roots; the angle pi is
- * included when stationary), polished by Newton on the trigonometric form; count <= 8.
- * The partner on b of a point x is the closest point of b to x (prox_circle_closest_on_b below).
+ * (Agarwal Sec. 3.5, degree 8 in tan(theta_a/2), rooted by the finder m: PROX_ROOTS_CHAIN or
+ * PROX_ROOTS_GSL, core/poly.h; the angle pi is included when stationary), polished by Newton on the
+ * trigonometric form; count <= 8. Implemented in core/circle_circle_stat.c.
+ * The partner on b of a point x is the closest point of b to x (prox_fcircle_closest below).
  * Returns 1 when g is constant on a (coaxial circles, or a lies on b's axis... i.e. degenerate):
- * then count = 0 and callers treat the contact as a set. Returns a negative prox_status on failure. */
-int prox_circle_circle_stationary(const prox_fcircle *a, const prox_fcircle *b, double th[8], int *count);
+ * then count = 0 and callers treat the contact as a set. Returns -PROX_ENUMERIC when the root finder
+ * fails (never 0 with a partial list). */
+int prox_circle_circle_stationary(const prox_fcircle *a, const prox_fcircle *b, prox_root_method m, double th[8],
+                                  int *count);
 
 /* A stationary angle on circle a of dist^2(point_a(theta), circle b) near a0 (safeguarded Newton on
  * the trigonometric form, no polynomial, trig-free): the fast path of RCC-RCC, whose answer is then

@@ -110,8 +110,40 @@ prox_vec3 prox_cyl_closest(const prox_cyl *k, prox_vec3 x);
  * and the outward unit normal n at q, with x = q + sd n. */
 double prox_cyl_signed(const prox_cyl *k, prox_vec3 x, prox_vec3 *q, prox_vec3 *n);
 
+/* Clips the segment p + s (q - p), s in [0, 1], to the solid cylinder `cyl` (a const prox_cyl *)
+ * enlarged by tol: prox_segment_clip_solid_cyl in the form of a prox_clip_fn (core/box.h). */
+int prox_cyl_clip_segment(const void *cyl, prox_vec3 p, prox_vec3 q, double tol, double *s0, double *s1);
+
+/* ---- containment (core/cyl_contain.c) ---- */
+
+/* 1 when the circle (centre c, unit normal n, radius r) lies in the closed solid cylinder k enlarged
+ * by tol (absolute): its axial range within [-tol, h + tol] and its farthest point from k's axis
+ * within r + tol. Cheap accept / reject tests first, the exact farthest point only between them. */
+int prox_cyl_contains_circle(const prox_cyl *k, prox_vec3 c, prox_vec3 n, double r, double tol);
+
+/* Clearance of that circle in k: min over the circle of the distance to k's boundary when inside
+ * (< 0 when it sticks out: minus how far, axially or radially): min(tc - r|n x w|, h - tc - r|n x w|,
+ * k.r - farthest distance from the axis). */
+double prox_cyl_circle_clearance(const prox_cyl *k, prox_vec3 c, prox_vec3 n, double r);
+
+/* 1 when the solid cylinder `in` lies in the solid cylinder `out` enlarged by tol: both rims of `in`
+ * do (out is convex, in the hull of its rims). Agarwal Fig. 2's nesting test. */
+int prox_cyl_in_cyl(const prox_cyl *in, const prox_cyl *out, double tol);
+
+/* Clearance of `in` in `out`: the smaller of its rims' clearances (inside, the distance to out's
+ * boundary is concave, so its minimum over `in` is attained at an extreme point, i.e. on a rim). */
+double prox_cyl_in_cyl_clearance(const prox_cyl *in, const prox_cyl *out);
+
 /* Rim circle `end` (0 base, 1 top) with a frame: Duff et al.'s branch-free orthonormal basis of the
  * axis ("Building an orthonormal basis, revisited", JCGT 2017); both rims share it. */
 prox_fcircle prox_cyl_rim(const prox_cyl *k, int end);
+
+/* A point common to the solids a and b (src/core/common_point.c): each axis clipped by the other
+ * solid, the mid-disks' common chord, then Douglas-Rachford between the solids shrunk by margins from
+ * a quarter of the smallest dimension down to 0, `iters` steps each, started at `start`. Every point
+ * is checked with prox_cyl_contains(., ., tol) in both. Returns 1 with the point in *out, else 0 with
+ * the last iterate (a point of a) in *out. */
+int prox_cyl_common_point(const prox_cyl *a, const prox_cyl *b, prox_vec3 start, int iters, double tol,
+                          prox_vec3 *out);
 
 #endif

@@ -1,5 +1,5 @@
 /* Real roots of polynomials of degree <= 8 (the single owner of gsl_poly_complex_solve in prox).
- * Sources: issue 2 Sec. 3; closed forms: stable quadratic (Numerical Recipes 5.6 style
+ * Sources: closed forms: stable quadratic (Numerical Recipes 5.6 style
  * q = -(b + sgn(b) sqrt(b^2 - 4ac))/2), GSL's closed-form cubic (gsl_poly_complex_solve_cubic),
  * Ferrari's quartic through the resolvent cubic 8m^3 + 8p m^2 + (2p^2 - 8r) m - q^2 = 0
  * (docs/algorithms/poly.md); degree 5..8 through GSL's balanced companion-matrix QR with a
@@ -207,9 +207,15 @@ static prox_status poly_prepare(const double *c, int degree, double *roots, int 
     return PROX_OK;
 }
 
+/* The test hook of prox_poly_test_fail_qr: per thread, so that it cannot disturb other threads. */
+static _Thread_local int poly_fail_qr;
+
+void prox_poly_test_fail_qr(int on) { poly_fail_qr = on; }
+
 /* Complex roots by GSL's companion-matrix QR, with the workspace on the stack (no allocation). */
 static prox_status poly_gsl_roots(const double *w, int n, poly_cand *z)
 {
+    if (poly_fail_qr) return PROX_ENUMERIC; /* test hook: a QR that did not converge */
     double matrix[PROX_POLY_MAX_DEGREE * PROX_POLY_MAX_DEGREE];
     double packed[2 * PROX_POLY_MAX_DEGREE];
     gsl_poly_complex_workspace ws;
@@ -642,4 +648,10 @@ prox_status prox_poly_real_roots_gsl(const double *c, int degree, double *roots,
     if ((st = poly_gsl_roots(w, n, z)) != PROX_OK) return st;
     poly_finish(w, degree, z, n, roots, count);
     return PROX_OK;
+}
+
+prox_status prox_poly_real_roots_by(prox_root_method m, const double *c, int degree, double *roots, int *count)
+{
+    return m == PROX_ROOTS_GSL ? prox_poly_real_roots_gsl(c, degree, roots, count)
+                               : prox_poly_real_roots_fast(c, degree, roots, count);
 }

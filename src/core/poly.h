@@ -30,6 +30,21 @@ prox_status prox_poly_real_roots_fast(const double *c, int degree, double *roots
 /* Same, always through gsl_poly_complex_solve (the reference path, for tests and bench). */
 prox_status prox_poly_real_roots_gsl(const double *c, int degree, double *roots, int *count);
 
+/* Which root finder a caller wants for degree 5..8 (quartics and lower always use closed forms). */
+typedef enum prox_root_method {
+    PROX_ROOTS_CHAIN = 0, /* prox_poly_real_roots_fast: the derivative chain (fast path's complete search) */
+    PROX_ROOTS_GSL        /* prox_poly_real_roots_gsl: GSL's companion-matrix QR (the closed-form method) */
+} prox_root_method;
+
+/* Real roots by the chosen finder; same contract as prox_poly_real_roots. */
+prox_status prox_poly_real_roots_by(prox_root_method m, const double *c, int degree, double *roots, int *count);
+
+/* Test hook: while `on` is nonzero in the calling thread, every use of GSL's companion-matrix QR
+ * reports PROX_ENUMERIC as if the QR had not converged. GSL has no input known to fail on demand, and
+ * none could be reached through a cylinder pair, so this is how the tests reach the callers' error
+ * paths (status PROX_ENUMERIC). The library never sets it. */
+void prox_poly_test_fail_qr(int on);
+
 /* Evaluates the polynomial and its derivative at x (Horner). */
 double prox_poly_eval(const double *c, int degree, double x, double *deriv);
 

@@ -8,15 +8,8 @@
  * vertex-solid or edge-edge, so min over 16 point-box and 144 segment-segment distances is exact; the
  * candidates are pruned by projection lower bounds along the SAT axis and the best pair's direction
  * (docs/algorithms/box_speed.md), which leaves that minimum unchanged. */
+#include "core/tol.h"
 #include "distance/box_internal.h"
-
-/* Cross-product axes a_i x b_j shorter than this (unit edges: the sine of their angle) are skipped: the
- * face axes and the other cross axes then decide (standard SAT practice). Skipping costs at most
- * BB_PAR_TOL x scale in depth (the Minkowski facet of two edges at angle e differs from the facets
- * of the plane orthogonal to them by O(e x size)), well inside the 1e-9 x scale depth accuracy. */
-#define BB_PAR_TOL 1e-10
-/* |n.a_k| below this makes the support feature of a box an edge or a face (near-parallel faces). */
-#define BB_FEAT_TOL 1e-9
 
 /* Overlap of the projections of A and B on the unit axis L (negative: separated along L). */
 static double axis_overlap(const prox_bframe *A, const prox_bframe *B, prox_vec3 L)
@@ -37,7 +30,7 @@ static int sat_axis(const prox_bframe *A, const prox_bframe *B, int i, prox_vec3
     else {
         prox_vec3 c = prox_v3_cross(A->a[(i - 6) / 3], B->a[(i - 6) % 3]);
         double n = prox_v3_norm(c);
-        if (!(n > BB_PAR_TOL)) return 0; /* near-parallel edges: see BB_PAR_TOL */
+        if (!(n > PROX_TOL_EDGE_AXIS)) return 0; /* near-parallel edges (standard SAT practice): see core/tol.h */
         *L = prox_v3_divs(c, n);
     }
     return 1;
@@ -256,7 +249,7 @@ static int support_feature(const prox_bframe *F, prox_vec3 n, prox_vec3 out[4])
     int free_k[2], nf = 0;
     for (int k = 0; k < 3; ++k) {
         double c = prox_v3_dot(n, F->a[k]);
-        if (fabs(c) <= BB_FEAT_TOL) {
+        if (fabs(c) <= PROX_TOL_FACE) { /* near-parallel face: the feature is an edge or a face */
             if (nf < 2) free_k[nf++] = k;
             l[k] = 0.0;
         } else l[k] = c > 0.0 ? F->h[k] : -F->h[k];
@@ -350,7 +343,7 @@ PROX_API prox_signed_result prox_box_box_signed_distance(const prox_box *a, cons
      * one realises it (ties between a face and an edge axis, e.g. an edge lying across a face, can put
      * first an axis whose support features do not meet). */
     prox_bframe A = prox_bframe_make(a), B = prox_bframe_make(b);
-    double ov[15], tol = 1e-9 * bb_scale(&A, &B);
+    double ov[15], tol = PROX_TOL_TIE * bb_scale(&A, &B); /* overlaps within it are a tie */
     prox_vec3 ax[15];
     int order[15], m = 0;
     for (int i = 0; i < 15; ++i) {

@@ -14,43 +14,28 @@
  * against solid cylinder in closed form with the primitive solvers of Agarwal et al. (2016): the
  * lateral surface by P(L, S) (Sec. 3.1, prox_segment_cylsurf_inf, kept when its foot is between the end
  * planes), each end disk with its rim by P(D, L) (Sec. 3.2-3.3, prox_disk_segment), edges pruned by a
- * capsule lower bound. Rim against face: the circle's lowest point along the face normal. */
+ * capsule lower bound. Rim against face: the circle's lowest point along the face normal.
+ * The signed distance (depth when they overlap) composes this with the support-function engine of
+ * src/sat and lives in src/query/box_rcc_signed.c. */
 #include "distance/box_internal.h"
-#include "core/circle.h"
-
-#include <float.h>
+#include "core/tol.h"
 #include "prox/primitives.h"
-#include "prox/support.h"
-
-/* Clips p + s (q - p), s in [0,1], to the solid cylinder enlarged by tol (a prox_clip_fn). */
-static int clip_segment_cyl(const void *cyl, prox_vec3 p, prox_vec3 q, double tol, double *s0, double *s1)
-{
-    const prox_cframe *c = cyl;
-    return prox_segment_clip_solid_cyl(p, q, c->base, c->w, c->h, c->r, tol, s0, s1);
-}
-
-/* Point of the rim circle (top = 0 base, 1 top) at angle th. */
-static prox_vec3 rim_point(const prox_cframe *c, int top, double th)
-{
-    prox_vec3 ctr = prox_cframe_rim_center(c, top);
-    return prox_v3_add(ctr, prox_v3_add(prox_v3_scale(c->u, c->r * cos(th)), prox_v3_scale(c->v, c->r * sin(th))));
-}
 
 /* Does the rim circle meet the box enlarged by tol? Each constraint |g_k(th)| <= h_k + tol with
  * g_k = gamma + alpha cos th + beta sin th holds on arcs; a non-empty intersection of arcs contains
  * one of their end angles (or is the whole circle), so those angles and the midpoints between them
  * are the only candidates to test. */
-static int rim_meets_box(const prox_cframe *c, int top, const prox_bframe *B, double tol, prox_vec3 *x)
+static int rim_meets_box(const prox_cyl *c, int top, const prox_bframe *B, double tol, prox_vec3 *x)
 {
     double cand[32];
     int nc = 0;
     cand[nc++] = 0.0;
-    prox_vec3 ctr = prox_cframe_rim_center(c, top);
+    prox_fcircle rim = prox_cyl_rim(c, top);
     double g[3], al[3], be[3];
     for (int k = 0; k < 3; ++k) {
-        g[k] = prox_v3_dot(prox_v3_sub(ctr, B->m), B->a[k]);
-        al[k] = c->r * prox_v3_dot(c->u, B->a[k]);
-        be[k] = c->r * prox_v3_dot(c->v, B->a[k]);
+        g[k] = prox_v3_dot(prox_v3_sub(rim.c, B->m), B->a[k]);
+        al[k] = rim.r * prox_v3_dot(rim.u, B->a[k]);
+        be[k] = rim.r * prox_v3_dot(rim.v, B->a[k]);
         double R = prox_hypot2(al[k], be[k]), phi = atan2(be[k], al[k]);
         for (int sgn = -1; sgn <= 1 && R > 0.0; sgn += 2) {
             double rho = (sgn * (B->h[k] + tol) - g[k]) / R;
@@ -70,31 +55,29 @@ static int rim_meets_box(const prox_cframe *c, int top, const prox_bframe *B, do
         for (int k = 0; k < 3 && ok; ++k)
             ok = fabs(g[k] + al[k] * cos(cand[i]) + be[k] * sin(cand[i])) <= B->h[k] + 2.0 * tol;
         if (ok) {
-            *x = rim_point(c, top, cand[i]);
+            *x = prox_fcircle_point(&rim, cand[i]);
             return 1;
         }
     }
     return 0;
 }
 
-static double pair_scale(const prox_bframe *B, const prox_cframe *c)
+static double pair_scale(const prox_bframe *B, const prox_cyl *c)
 {
-    prox_vec3 cc = prox_v3_mad(c->base, 0.5 * c->h, c->w);
-    double s = prox_v3_dist(B->m, cc), v[3] = {prox_bframe_size(B), c->h, 2.0 * c->r};
+    double s = prox_v3_dist(B->m, c->c), v[3] = {prox_bframe_size(B), c->h, 2.0 * c->r};
     for (int i = 0; i < 3; ++i) s = v[i] > s ? v[i] : s;
     return s;
 }
 
 /* The verdict with a common point when they meet. */
-static int box_rcc_meet(const prox_bframe *B, const prox_cframe *c, double tol, prox_vec3 *x)
+static int box_rcc_meet(const prox_bframe *B, const prox_cyl *c, double tol, prox_vec3 *x)
 {
-    if (prox_bframe_edges_meet(B, clip_segment_cyl, c, tol, x)) return 1;
+    if (prox_bframe_edges_meet(B, prox_cyl_clip_segment, c, tol, x)) return 1;
     for (int top = 0; top < 2; ++top)
         if (rim_meets_box(c, top, B, tol, x)) return 1;
-    prox_vec3 top = prox_v3_mad(c->base, c->h, c->w);
     double s0, s1;
-    if (prox_bframe_clip_segment(B, c->base, top, tol, &s0, &s1)) {
-        *x = prox_v3_mad(c->base, 0.5 * (s0 + s1) * c->h, c->w);
+    if (prox_bframe_clip_segment(B, c->b, c->cap[1], tol, &s0, &s1)) {
+        *x = prox_v3_mad(c->b, 0.5 * (s0 + s1) * c->h, c->w);
         return 1;
     }
     return 0;
@@ -110,7 +93,7 @@ typedef struct br_dir {
     double v[8], vmax, cmin, disk[2];
 } br_dir;
 
-static br_dir br_dir_make(const prox_bframe *B, const prox_cframe *c, prox_vec3 n)
+static br_dir br_dir_make(const prox_bframe *B, const prox_cyl *c, prox_vec3 n)
 {
     br_dir D;
     D.n = n;
@@ -119,7 +102,7 @@ static br_dir br_dir_make(const prox_bframe *B, const prox_cframe *c, prox_vec3 
     D.vmax = fabs(e[0]) + fabs(e[1]) + fabs(e[2]);
     for (int i = 0; i < 8; ++i) D.v[i] = ((i & 1) ? e[0] : -e[0]) + ((i & 2) ? e[1] : -e[1]) + ((i & 4) ? e[2] : -e[2]);
     double nw = prox_v3_dot(n, c->w), perp = c->r * prox_v3_norm(prox_v3_mad(n, -nw, c->w));
-    double b0 = prox_v3_dot(n, prox_v3_sub(c->base, B->m));
+    double b0 = prox_v3_dot(n, prox_v3_sub(c->b, B->m));
     D.disk[0] = b0 - perp;
     D.disk[1] = b0 + c->h * nw - perp;
     D.cmin = fmin(D.disk[0], D.disk[1]);
@@ -131,9 +114,9 @@ static double br_gap(const br_dir *D) { return D->cmin - D->vmax; }
 
 /* A cheap separating direction: the best of the centre line, the cylinder axis and the box axes (each
  * oriented from the box towards the cylinder); *gap its gap (a lower bound of the distance). */
-static prox_vec3 br_separating_dir(const prox_bframe *B, const prox_cframe *c, double *gap)
+static prox_vec3 br_separating_dir(const prox_bframe *B, const prox_cyl *c, double *gap)
 {
-    prox_vec3 cc = prox_v3_sub(prox_v3_mad(c->base, 0.5 * c->h, c->w), B->m);
+    prox_vec3 cc = prox_v3_sub(c->c, B->m);
     double ncc = prox_v3_norm(cc);
     prox_vec3 cand[5] = {ncc > 0.0 ? prox_v3_divs(cc, ncc) : c->w, c->w, B->a[0], B->a[1], B->a[2]};
     prox_vec3 best = cand[0];
@@ -151,13 +134,13 @@ static prox_vec3 br_separating_dir(const prox_bframe *B, const prox_cframe *c, d
  * (*x a common point when they meet; *n0 the best cheap separating direction). A gap above 8 tol along
  * a cheap direction decides "disjoint" without the exact test: box_rcc_meet enlarges the solids by at
  * most 2 tol per coordinate (2 sqrt(3) tol in all), so it cannot find a common point there either. */
-static prox_status box_rcc_setup(const prox_box *a, const prox_rcc *b, prox_bframe *B, prox_cframe *c, int *meet,
+static prox_status box_rcc_setup(const prox_box *a, const prox_rcc *b, prox_bframe *B, prox_cyl *c, int *meet,
                                  prox_vec3 *x, prox_vec3 *n0)
 {
     prox_status st = prox_valid2(prox_box_validate(a), prox_rcc_validate(b));
     if (st != PROX_OK) return st;
     *B = prox_bframe_make(a);
-    *c = prox_cframe_make(b);
+    *c = prox_cyl_make(b, prox_v3(0, 0, 0));
     /* box_rcc_meet may report a contact up to 2 sqrt(3) tol away: a quarter of the query tolerance
      * keeps that within PROX_QUERY_REL_TOL x scale (pairs 3.3e-12 x scale apart were reported
      * touching with the full one), still far above the rounding of its tests. */
@@ -171,7 +154,7 @@ PROX_API prox_test_result prox_box_rcc_test(const prox_box *a, const prox_rcc *b
 {
     prox_test_result r = {0};
     prox_bframe B;
-    prox_cframe c;
+    prox_cyl c;
     prox_vec3 x, n0;
     r.status = box_rcc_setup(a, b, &B, &c, &r.intersect, &x, &n0);
     return r;
@@ -185,9 +168,9 @@ PROX_API prox_test_result prox_box_rcc_test(const prox_box *a, const prox_rcc *b
  * end plane at the same radius and the cap candidate attains the same distance). Conversely a foot in
  * [0, h] outside the surface is the edge's own minimum: dist(x, C) >= dist(x, infinite cylinder), with
  * equality at the foot. */
-static double edge_lateral(const prox_cframe *c, const prox_segment *s, prox_vec3 *x, prox_vec3 *y)
+static double edge_lateral(const prox_cyl *c, const prox_segment *s, prox_vec3 *x, prox_vec3 *y)
 {
-    prox_cylsurf S = {c->base, c->w, c->h, c->r};
+    prox_cylsurf S = {c->b, c->w, c->h, c->r};
     prox_prim_result q = prox_segment_cylsurf_inf(s, &S);
     if (q.status != PROX_OK || !(q.s2[0] >= 0.0 && q.s2[0] <= c->h)) return INFINITY;
     *x = q.p1;
@@ -208,10 +191,10 @@ static double point_seg_dist(prox_vec3 x, const prox_segment *s)
  * crossing, endpoints against the disk, the rim by the quartic of prox_circle_segment), skipped when a
  * cheap lower bound (lb0 from the projections; height of the edge above the disk's plane; distance from
  * the disk's centre minus r) already reaches `best`. */
-static double edge_cap(const prox_cframe *c, int top, const prox_segment *s, double lb0, double best, prox_vec3 *x,
+static double edge_cap(const prox_cyl *c, int top, const prox_segment *s, double lb0, double best, prox_vec3 *x,
                        prox_vec3 *y)
 {
-    prox_vec3 ctr = prox_cframe_rim_center(c, top);
+    prox_vec3 ctr = c->cap[top];
     double ha = prox_v3_dot(prox_v3_sub(s->a, ctr), c->w), hb = prox_v3_dot(prox_v3_sub(s->b, ctr), c->w);
     double lb = (ha > 0.0) == (hb > 0.0) && ha != 0.0 && hb != 0.0 ? fmin(fabs(ha), fabs(hb)) : 0.0;
     if (fmax(lb, lb0) >= best) return INFINITY;
@@ -251,14 +234,14 @@ static double proj_lb(const br_dir D[2], unsigned mask, const double ymin[2])
  * the directions D (cheap; edges it already rules out get no more work), then the capsule bound
  * dist(edge, axis segment) - r (the cylinder lies in that capsule); stopping when the bound reaches the
  * best distance found; each remaining edge against the lateral surface and both end disks. */
-static void edges_cyl(const prox_bframe *B, const prox_cframe *c, const br_dir D[2], double *best, prox_vec3 *p1,
+static void edges_cyl(const prox_bframe *B, const prox_cyl *c, const br_dir D[2], double *best, prox_vec3 *p1,
                       prox_vec3 *p2)
 {
     prox_segment e[12];
     double lb[12];
     unsigned ends[12];
     int order[12], m = 0;
-    prox_vec3 top = prox_v3_mad(c->base, c->h, c->w), u, v;
+    prox_vec3 top = c->cap[1], u, v;
     double cmin[2] = {D[0].cmin, D[1].cmin};
     for (int j = 0; j < 12; ++j) {
         int p, q;
@@ -267,7 +250,7 @@ static void edges_cyl(const prox_bframe *B, const prox_cframe *c, const br_dir D
         lb[j] = proj_lb(D, ends[j], cmin);
         if (lb[j] >= *best) continue;
         prox_bframe_edge(B, j, &e[j].a, &e[j].b);
-        lb[j] = fmax(lb[j], prox_seg_seg(e[j].a, e[j].b, c->base, top, &u, &v) - c->r);
+        lb[j] = fmax(lb[j], prox_seg_seg(e[j].a, e[j].b, c->b, top, &u, &v) - c->r);
         int i = m++;
         for (; i > 0 && lb[order[i - 1]] > lb[j]; --i) order[i] = order[i - 1];
         order[i] = j;
@@ -285,7 +268,7 @@ static void edges_cyl(const prox_bframe *B, const prox_cframe *c, const br_dir D
              * then at a cap, up to angle x length lower: 2.6e-11 at 1e-9 rad in test_box_rcc). A
              * true foot on the surface needs no cap: the distance is flat around it to second order. */
             prox_vec3 ed = prox_v3_sub(s->b, s->a);
-            if (prox_v3_norm2(prox_v3_cross(ed, c->w)) > 1e-6 * prox_v3_norm2(ed)) continue;
+            if (prox_v3_norm2(prox_v3_cross(ed, c->w)) > PROX_TOL_WELL_COND2 * prox_v3_norm2(ed)) continue;
         }
         for (int t = 0; t < 2; ++t) {
             double dmin[2] = {D[0].disk[t], D[1].disk[t]};
@@ -297,18 +280,18 @@ static void edges_cyl(const prox_bframe *B, const prox_cframe *c, const br_dir D
 
 /* Rim circle against the interior of the box face with outward normal sgn a_k: the circle's lowest
  * point along the normal, when it projects into the face and lies above it. */
-static double rim_face(const prox_cframe *c, int top, const prox_bframe *B, int k, int sgn, prox_vec3 *x, prox_vec3 *y)
+static double rim_face(const prox_cyl *c, int top, const prox_bframe *B, int k, int sgn, prox_vec3 *x, prox_vec3 *y)
 {
     prox_vec3 nf = prox_v3_scale(B->a[k], (double)sgn);
-    prox_vec3 ctr = prox_cframe_rim_center(c, top);
+    prox_vec3 ctr = c->cap[top];
     prox_vec3 rj = prox_v3_reject(nf, c->w);
     double rn = prox_v3_norm(rj);
     prox_vec3 dir;
-    if (rn > 1e-12) dir = prox_v3_neg(prox_v3_divs(rj, rn));
+    if (rn > PROX_TOL_PARALLEL) dir = prox_v3_neg(prox_v3_divs(rj, rn));
     else { /* circle parallel to the face: every rim point is as low; take the one nearest the centre */
         prox_vec3 t = prox_v3_reject(prox_v3_sub(B->m, ctr), c->w);
         double tn = prox_v3_norm(t);
-        dir = tn > 0.0 ? prox_v3_divs(t, tn) : c->u;
+        dir = tn > 0.0 ? prox_v3_divs(t, tn) : prox_v3_any_perp(c->w);
     }
     /* For a rim nearly parallel to the face, rj is a short difference whose rounding (~eps / rn
      * relative) tilts dir out of the rim's plane: r x that tilt put the "rim point" off the cylinder
@@ -324,7 +307,7 @@ static double rim_face(const prox_cframe *c, int top, const prox_bframe *B, int 
     /* A point on the face up to the rounding of coordinates far from the origin (l is a difference of
      * coordinates ~|x|): a touching contact, distance 0, not a missing candidate (which left pairs
      * 1e6 from the origin 0.01-0.15 apart that touch). */
-    double round_tol = 64.0 * DBL_EPSILON * (prox_v3_maxabs(*x) + prox_v3_maxabs(B->m) + B->h[k]);
+    double round_tol = PROX_TOL_NOISE * (prox_v3_maxabs(*x) + prox_v3_maxabs(B->m) + B->h[k]);
     if (!(height > -round_tol)) return INFINITY;
     if (height < 0.0) height = 0.0;
     l[k] = sgn * B->h[k];
@@ -333,13 +316,13 @@ static double rim_face(const prox_cframe *c, int top, const prox_bframe *B, int 
 }
 
 /* Vertex i of the box against the solid cylinder, once (bit i of *done). */
-static void vertex_cyl(const prox_bframe *B, const prox_rcc *b, int i, unsigned *done, double *best, prox_vec3 *p1,
+static void vertex_cyl(const prox_bframe *B, const prox_cyl *c, int i, unsigned *done, double *best, prox_vec3 *p1,
                        prox_vec3 *p2)
 {
     if (*done >> i & 1) return;
     *done |= 1u << i;
     prox_vec3 n, y, v = prox_bframe_vertex(B, i);
-    double d = prox_rcc_point_signed(b, v, &y, &n);
+    double d = prox_cyl_signed(c, v, &y, &n);
     if (d < *best) *best = d, *p1 = v, *p2 = y;
 }
 
@@ -352,7 +335,7 @@ PROX_API prox_distance_result prox_box_rcc_distance(const prox_box *a, const pro
 {
     prox_distance_result r = {0};
     prox_bframe B;
-    prox_cframe c;
+    prox_cyl c;
     prox_vec3 x, y, n0;
     r.status = box_rcc_setup(a, b, &B, &c, &r.intersect, &x, &n0);
     if (r.status != PROX_OK) return r;
@@ -367,13 +350,13 @@ PROX_API prox_distance_result prox_box_rcc_distance(const prox_box *a, const pro
         int i = 0;
         for (int k = 0; k < 3; ++k)
             if (prox_v3_dot(n, B.a[k]) > 0.0) i |= 1 << k;
-        vertex_cyl(&B, b, i, &done, &best, &r.p1, &r.p2);
+        vertex_cyl(&B, &c, i, &done, &best, &r.p1, &r.p2);
         if (!(best > 0.0)) break;
         n = prox_v3_divs(prox_v3_sub(r.p2, r.p1), best);
     }
     br_dir D[2] = {br_dir_make(&B, &c, n0), br_dir_make(&B, &c, n)};
     for (int i = 0; i < 8; ++i)
-        if (fmax(D[0].cmin - D[0].v[i], D[1].cmin - D[1].v[i]) < best) vertex_cyl(&B, b, i, &done, &best, &r.p1, &r.p2);
+        if (fmax(D[0].cmin - D[0].v[i], D[1].cmin - D[1].v[i]) < best) vertex_cyl(&B, &c, i, &done, &best, &r.p1, &r.p2);
     for (int top = 0; top < 2; ++top) {
         double rmin[2]; /* the rim's least projection: that of its disk */
         for (int d = 0; d < 2; ++d) rmin[d] = D[d].disk[top];
@@ -391,24 +374,12 @@ PROX_API prox_distance_result prox_box_rcc_distance(const prox_box *a, const pro
     r.distance = best > 0.0 ? best : 0.0; /* a vertex within rounding inside: touching */
     /* Both directions give lower bounds (weak duality); the pair's own direction is the sharp one
      * unless the points coincide (touching within rounding), where n0's is used. */
-    double gap0 = -prox_rcc_support(b, prox_v3_neg(n0)) - prox_bframe_support(&B, n0);
+    double gap0 = -prox_cyl_support(&c, prox_v3_neg(n0)) - prox_bframe_support(&B, n0);
     r.certificate_gap = gap0;
     if (r.distance > 0.0) {
         n = prox_v3_divs(prox_v3_sub(r.p2, r.p1), prox_v3_dist(r.p2, r.p1));
-        double g = -prox_rcc_support(b, prox_v3_neg(n)) - prox_bframe_support(&B, n);
+        double g = -prox_cyl_support(&c, prox_v3_neg(n)) - prox_bframe_support(&B, n);
         if (g > gap0) r.certificate_gap = g;
     }
     return r;
-}
-
-PROX_API prox_signed_result prox_box_rcc_signed_distance(const prox_box *a, const prox_rcc *b)
-{
-    prox_signed_result r = {0};
-    prox_distance_result d = prox_box_rcc_distance(a, b);
-    r.status = d.status;
-    if (r.status != PROX_OK) return r;
-    if (!d.intersect && d.distance > 0.0) return prox_signed_from_disjoint(&d);
-    /* overlapping: minimum of h_A(D) + h_B(-D) over unit D (support-function engine) */
-    prox_shape sa = prox_shape_from_box(*a), sb = prox_shape_from_rcc(*b);
-    return prox_shape_signed_distance_support(&sa, &sb);
 }

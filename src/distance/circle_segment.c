@@ -1,191 +1,10 @@
-/* P(C, L) of Agarwal et al. (2016) Sec. 3.3: circle to segment, and every stationary angle of the
- * squared distance from a circle point to an infinite line.
- * Circle point P(th) = c + r (cos th u + sin th v) (Eq. (14) with s1 = 1); line x(t) = p + t w, |w| = 1.
- * Eq. (16): f_t = 0 is linear in t, t = (P(th) - p).w. Substituting it into f_th = 0 gives g1 = 0; in the
- * normalised frame (lengths divided by r, p the foot of c on the line, e = (c - p) / r) it reads
- *   h(th) = A sin th + B cos th + C cos 2th + D sin 2th = 0,
- *   A = (e.w)(u.w) - e.u,  B = e.v - (e.w)(v.w),  C = -(u.w)(v.w),  D = ((u.w)^2 - (v.w)^2) / 2,
- * (h = g'(th) / (2 r^2), g = dist^2). The half-angle substitution x = tan(th/2) turns h (1 + x^2)^2 into
- * the quartic g2 of Sec. 3.3:
- *   (C - B) x^4 + (2A - 4D) x^3 - 6C x^2 + (2A + 4D) x + (B + C) = 0.
- * Its leading coefficient is h(pi): the angle pi is sent to infinity by the substitution, so pi is added
- * whenever h(pi) is small. Roots come from prox_poly_real_roots (closed form for quartics) and are
- * polished by Newton on the exact h. h == 0 identically (A = B = C = D = 0) exactly when the line is the
- * circle's axis.
+/* P(C, L) of Agarwal et al. (2016) Sec. 3.3: circle to segment.
+ * The stationary angles of the circle-to-line distance (the quartic g2 of Sec. 3.3) come from
+ * prox_circle_line_stationary (core/circle_line.c, which derives them).
  * The segment minimum is the smallest of: the stationary angles whose foot t falls in the segment, and
  * the two endpoints against the circle (point_circle.c); the constrained minimum of
  * |P(th) - a - t(b - a)|^2 over t in [0, 1] is one of those. */
-#include "core/poly.h"
 #include "distance/prim_common.h"
-
-#include <float.h>
-#include <stddef.h>
-
-/* Angles closer than this are one stationary point. */
-#define CL_DEDUP 1e-10
-/* h(pi) below this x (coefficient scale) adds the angle pi. */
-#define CL_PI_TOL 1e-6
-
-/* h(th) and h'(th) of the normalised problem. */
-typedef struct cl_coef {
-    double A, B, C, D;
-} cl_coef;
-static double cl_h_cs(const cl_coef *k, double c, double s, double *dh)
-{
-    double s2 = 2.0 * s * c, c2 = (c - s) * (c + s);
-    if (dh) *dh = k->A * c - k->B * s - 2.0 * k->C * s2 + 2.0 * k->D * c2;
-    return k->A * s + k->B * c + k->C * c2 + k->D * s2;
-}
-static double cl_h(const cl_coef *k, double th, double *dh) { return cl_h_cs(k, cos(th), sin(th), dh); }
-
-/* Newton on h from the angle's unit vector a; returns the iterate with the smallest |h| (steps
- * limited to 0.5 rad; prox_unit2_step: no trigonometric call per step). */
-static prox_unit2 cl_polish_u(const cl_coef *k, prox_unit2 a)
-{
-    double dh, h = cl_h_cs(k, a.c, a.s, &dh), hb = fabs(h);
-    prox_unit2 best = a;
-    for (int it = 0; it < 12 && hb > 0.0; ++it) {
-        if (!(fabs(dh) > 0.0)) break;
-        double step = h / dh;
-        if (!(fabs(step) <= 0.5)) break;
-        a = prox_unit2_step(a, step);
-        h = cl_h_cs(k, a.c, a.s, &dh); /* one evaluation per iteration: value and derivative */
-        if (fabs(h) < hb) {
-            hb = fabs(h);
-            best = a;
-        }
-        if (fabs(step) <= 8.0 * DBL_EPSILON) break;
-    }
-    return best;
-}
-
-/* The same from an angle, returning an angle in (-pi, pi]. */
-static double cl_polish(const cl_coef *k, double th)
-{
-    prox_unit2 a = cl_polish_u(k, (prox_unit2){cos(th), sin(th)});
-    return atan2(a.s, a.c);
-}
-
-/* The angle 2 atan(t) of a root t of the half-angle polynomial, as a unit vector without a
- * trigonometric call: (cos, sin) = ((1 - t^2), 2t) / (1 + t^2), written in 1/t for |t| > 1. */
-static prox_unit2 unit2_of_half_tan(double t)
-{
-    if (fabs(t) <= 1.0) {
-        double q = 1.0 / (1.0 + t * t);
-        return (prox_unit2){(1.0 - t * t) * q, 2.0 * t * q};
-    }
-    double u = 1.0 / t, q = 1.0 / (u * u + 1.0);
-    return (prox_unit2){(u * u - 1.0) * q, 2.0 * u * q};
-}
-
-/* Sorts, merges angles closer than CL_DEDUP (also across 0 / 2pi) and keeps at most 4 (smallest |h|). */
-static int cl_dedup(const cl_coef *k, double *th, int n)
-{
-    for (int i = 1; i < n; ++i) /* insertion sort */
-        for (int j = i; j > 0 && th[j] < th[j - 1]; --j) {
-            double t = th[j];
-            th[j] = th[j - 1];
-            th[j - 1] = t;
-        }
-    int m = 0;
-    for (int i = 0; i < n; ++i)
-        if (m == 0 || th[i] - th[m - 1] > CL_DEDUP) th[m++] = th[i];
-    if (m > 1 && th[0] + 2.0 * PROX_PI - th[m - 1] <= CL_DEDUP) --m;
-    while (m > 4) { /* more than a trigonometric quartic can have: drop the worst residual */
-        int w = 0;
-        for (int i = 1; i < m; ++i)
-            if (fabs(cl_h(k, th[i], NULL)) > fabs(cl_h(k, th[w], NULL))) w = i;
-        th[w] = th[--m];
-    }
-    return m;
-}
-
-/* Fallback when the root finder fails: sign changes of h on a grid, then Newton. */
-static int cl_grid(const cl_coef *k, double *out)
-{
-    enum { N = 64 };
-    int n = 0;
-    double step = 2.0 * PROX_PI / N, hp = cl_h(k, 0.0, NULL);
-    for (int i = 1; i <= N && n < 8; ++i) {
-        double hc = cl_h(k, i * step, NULL);
-        if ((hp <= 0.0) != (hc <= 0.0)) out[n++] = cl_polish(k, (i - 0.5) * step);
-        hp = hc;
-    }
-    return n;
-}
-
-/* Coefficients of h in the normalised frame: origin at the foot of c on the line, lengths in r. */
-static cl_coef cl_make(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, prox_vec3 *e_out)
-{
-    prox_vec3 foot = prox_v3_mad(p, prox_v3_dot(prox_v3_sub(c->c, p), w), w);
-    prox_vec3 e = prox_v3_scale(prox_v3_sub(c->c, foot), 1.0 / c->r);
-    double al = prox_v3_dot(e, w), be = prox_v3_dot(c->u, w), ga = prox_v3_dot(c->v, w);
-    cl_coef k = {al * be - prox_v3_dot(e, c->u), prox_v3_dot(e, c->v) - al * ga, -be * ga,
-                 0.5 * (be - ga) * (be + ga)};
-    *e_out = e;
-    return k;
-}
-
-/* Local refinement for the RCC-RCC fast path: a local MINIMUM of the circle-to-line distance near
- * a (a candidate must be a minimum; Newton on h alone may stop at the maximum or wander to the other
- * minimum).  Safeguarded Newton on the unit vector of the angle (prox_unit2_step, no trigonometric
- * call): the Newton step where h' > 0, else a descent step of 0.5 rad, halved until the distance
- * decreases; below 1e-7 rad (quadratic regime, where the decrease is rounding) until |h| does. */
-prox_unit2 prox_circle_line_local(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, prox_unit2 a)
-{
-    prox_vec3 e;
-    cl_coef k = cl_make(c, p, w, &e);
-    /* g/2 up to a constant: (e.u) cos + (e.v) sin - ((e.w) + (u.w) cos + (v.w) sin)^2 / 2 */
-    double eu = prox_v3_dot(e, c->u), ev = prox_v3_dot(e, c->v);
-    double al = prox_v3_dot(e, w), be = prox_v3_dot(c->u, w), ga = prox_v3_dot(c->v, w);
-#define CL_G(x) (eu * (x).c + ev * (x).s - 0.5 * (al + be * (x).c + ga * (x).s) * (al + be * (x).c + ga * (x).s))
-    double dh, h = cl_h_cs(&k, a.c, a.s, &dh), g = CL_G(a);
-    for (int it = 0; it < 40 && h != 0.0; ++it) {
-        double step = dh > 0.0 ? h / dh : (h > 0.0 ? 0.5 : -0.5);
-        if (!(fabs(step) <= 0.5)) step = step > 0.0 ? 0.5 : -0.5;
-        /* A Newton step below 1e-9 rad leaves an error of order step^2: take it and stop. */
-        if (dh > 0.0 && fabs(step) <= 1e-9) return prox_unit2_step(a, step);
-        int moved = 0;
-        for (int j = 0; j < 8 && !moved; ++j, step *= 0.5) {
-            prox_unit2 an = prox_unit2_step(a, step);
-            double dhn, hn = cl_h_cs(&k, an.c, an.s, &dhn), gn = CL_G(an);
-            if (gn < g || (fabs(step) <= 1e-7 && fabs(hn) < fabs(h))) {
-                a = an, h = hn, dh = dhn, g = gn, moved = 1;
-                break;
-            }
-            if (fabs(step) <= 1e-7) break; /* quadratic regime: no decrease means converged */
-        }
-        if (!moved) break;
-    }
-#undef CL_G
-    return a;
-}
-
-int prox_circle_line_stationary(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, double th[4], int *count)
-{
-    *count = 0;
-    prox_vec3 e;
-    cl_coef k = cl_make(c, p, w, &e);
-    double kmax = fmax(fmax(fabs(k.A), fabs(k.B)), fmax(fabs(k.C), fabs(k.D)));
-    if (kmax <= 64.0 * DBL_EPSILON * (1.0 + prox_v3_norm(e))) return 1; /* line along the axis */
-    double poly[5] = {k.B + k.C, 2.0 * k.A + 4.0 * k.D, -6.0 * k.C, 2.0 * k.A - 4.0 * k.D, k.C - k.B};
-    double roots[8], cand[12];
-    int nr = 0, n = 0;
-    if (prox_poly_real_roots(poly, 4, roots, &nr) == PROX_OK) {
-        for (int i = 0; i < nr; ++i) {
-            prox_unit2 a = cl_polish_u(&k, unit2_of_half_tan(roots[i]));
-            cand[n++] = atan2(a.s, a.c);
-        }
-        if (fabs(k.C - k.B) <= CL_PI_TOL * kmax) cand[n++] = cl_polish(&k, PROX_PI);
-    } else {
-        n = cl_grid(&k, cand);
-    }
-    for (int i = 0; i < n; ++i) cand[i] = prox_prim_wrap_2pi(cand[i]);
-    n = cl_dedup(&k, cand, n);
-    for (int i = 0; i < n; ++i) th[i] = cand[i];
-    *count = n;
-    return 0;
-}
 
 /* An endpoint (or axis point) x at parameter t against the circle; p1 on the circle, p2 = x. */
 static void consider_point(prox_prim_result *best, const prox_fcircle *f, prox_vec3 x, double t)
@@ -214,7 +33,13 @@ PROX_API prox_prim_result prox_circle_segment(const prox_circle *c, const prox_s
         double th[4];
         int n = 0;
         prox_vec3 w = prox_v3_scale(d, 1.0 / sqrt(dd));
-        if (prox_circle_line_stationary(&f, s->a, w, th, &n)) { /* segment on the axis */
+        int rc = prox_circle_line_stationary(&f, s->a, w, th, &n);
+        if (rc < 0) { /* the quartic could not be solved: no answer rather than a wrong one */
+            prox_prim_result fail = {0};
+            fail.status = (prox_status)(-rc);
+            return fail;
+        }
+        if (rc == 1) { /* segment on the axis */
             double t = prox_prim_clamp01(prox_v3_dot(prox_v3_sub(f.c, s->a), d) / dd);
             consider_point(&best, &f, prox_v3_mad(s->a, t, d), t);
             best.set = 1;
@@ -239,50 +64,4 @@ PROX_API prox_prim_result prox_circle_segment(const prox_circle *c, const prox_s
     consider_point(&best, &f, s->b, 1.0);
     best.status = PROX_OK;
     return best;
-}
-
-/* Farthest distance from the point (q0, q1) >= 0 to the ellipse x^2/a^2 + y^2/b^2 = 1, a >= b >= 0.
- * The farthest point lies in the opposite quadrant, at x = -a^2 q0 / tau, y = -b^2 q1 / (tau + c),
- * c = a^2 - b^2, where tau > 0 is the root of G(tau) = (a q0 / tau)^2 + (b q1 / (tau + c))^2 = 1
- * (Lagrange multiplier mu = tau + a^2 > a^2; G is convex and decreasing, so the root is unique and
- * bracketed by [a q0, sqrt(a^2 q0^2 + b^2 q1^2)]; Newton from the left end approaches it monotonically).
- * q0 = 0 with G(0+) <= 1 is the limit tau = 0: two farthest points share y = -b^2 q1 / c. The point
- * is put back on the ellipse before measuring, so that the error left in tau is of second order. */
-static double ellipse_farthest(double a, double b, double q0, double q1)
-{
-    double c = (a - b) * (a + b);
-    if (b == 0.0) return hypot(a + q0, q1); /* a segment: its far end */
-    if (!(q0 > 0.0) && b * q1 <= c) { /* the limit case (c > 0 here unless q1 = 0 too) */
-        double y = c > 0.0 ? -b * b * q1 / c : 0.0, x = a * sqrt(fmax(0.0, 1.0 - (y / b) * (y / b)));
-        return hypot(x, q1 - y);
-    }
-    double aq = a * q0, bq = b * q1, tau = aq > 0.0 ? aq : fmax(bq - c, 0.0);
-    for (int it = 0; it < 100; ++it) {
-        double g0 = tau > 0.0 ? aq / tau : 0.0, g1 = bq / (tau + c);
-        double G = g0 * g0 + g1 * g1 - 1.0;
-        if (!(G > 0.0)) break;
-        double dG = 2.0 * ((tau > 0.0 ? g0 * g0 / tau : 0.0) + g1 * g1 / (tau + c));
-        double step = G / dG;
-        if (!(step > 1e-17 * tau)) break;
-        tau += step;
-    }
-    double x = tau > 0.0 ? a * aq / tau : a, y = b * bq / (tau + c); /* magnitudes of the point */
-    double k = 1.0 / sqrt((x / a) * (x / a) + (y / b) * (y / b));
-    return hypot(q0 + k * x, q1 + k * y);
-}
-
-/* Max over the circle C of the distance to the line (base, unit w), in closed form up to one
- * monotone root (replaces the quartic of Agarwal Sec. 3.3 where only the maximum is wanted): along w the circle projects onto an ellipse with semi-axes r (along u, normal to
- * w and to the rim's normal n) and r |n.w| (along w x u), centred at the rim centre's offset E from
- * the axis; the answer is the ellipse's farthest point from the axis (ellipse_farthest). Within
- * 1e-8 rad of n || w the ellipse is a circle to 5e-17 r: |E| + r. */
-double prox_circle_line_max_dist(prox_vec3 centre, prox_vec3 n, double r, prox_vec3 base, prox_vec3 w)
-{
-    prox_vec3 E = prox_v3_reject(prox_v3_sub(centre, base), w);
-    prox_vec3 x = prox_v3_reject(prox_v3_cross(w, n), w);
-    double sn = prox_v3_norm(x);
-    if (!(sn > 1e-8)) return prox_v3_norm(E) + r;
-    prox_vec3 u = prox_v3_scale(x, 1.0 / sn), e = prox_v3_cross(w, u);
-    double b = r * fabs(prox_v3_dot(n, w));
-    return ellipse_farthest(r, fmin(b, r), fabs(prox_v3_dot(E, u)), fabs(prox_v3_dot(E, e)));
 }

@@ -7,9 +7,8 @@
  * Point clearances: box min_k (h_k - |l_k|); cylinder min(t, h - t, r - rho); sphere R - |x - c|.
  * A rim in a cylinder: axial extent t_c +- r |w_A x w_B|, and the largest distance of the rim from the
  * axis: the farthest point from the axis of the ellipse the rim projects onto
- * (prox_circle_line_max_dist, circle_segment.c). */
+ * (prox_cyl_in_cyl_clearance, core/cyl_contain.c: the containment the RCC-RCC query shares). */
 #include "distance/box_internal.h"
-#include "core/circle.h"
 #include "prox/support.h"
 
 static double box_point_clear(const prox_bframe *B, prox_vec3 x)
@@ -20,13 +19,16 @@ static double box_point_clear(const prox_bframe *B, prox_vec3 x)
     return m;
 }
 
-static double cyl_point_clear(const prox_cframe *c, prox_vec3 x)
+static double cyl_point_clear(const prox_cyl *c, prox_vec3 x)
 {
-    prox_vec3 d = prox_v3_sub(x, c->base);
+    prox_vec3 d = prox_v3_sub(x, c->b);
     double t = prox_v3_dot(d, c->w);
     double rho = prox_v3_norm(prox_v3_mad(d, -t, c->w));
     return fmin(fmin(t, c->h - t), c->r - rho);
 }
+
+/* A validated cylinder prepared in absolute coordinates. */
+static prox_cyl cyl_of(const prox_rcc *c) { return prox_cyl_make(c, prox_v3(0, 0, 0)); }
 
 /* Result of valid input: inside when the clearance is >= -tol (tol relative to the pair's scale). */
 static prox_contain_result finish(double clear, prox_shape a, prox_shape b)
@@ -64,7 +66,7 @@ PROX_API prox_contain_result prox_box_in_rcc(const prox_box *a, const prox_rcc *
     if (st != PROX_OK) return fail(st); /* before any dereference: null inputs */
     double c = INFINITY;
     prox_bframe A = prox_bframe_make(a);
-    prox_cframe g = prox_cframe_make(b);
+    prox_cyl g = cyl_of(b);
     for (int i = 0; i < 8; ++i) c = fmin(c, cyl_point_clear(&g, prox_bframe_vertex(&A, i)));
     return finish(c, prox_shape_from_box(*a), prox_shape_from_rcc(*b));
 }
@@ -92,7 +94,7 @@ PROX_API prox_contain_result prox_sph_in_rcc(const prox_sph *a, const prox_rcc *
 {
     prox_status st = prox_valid2(prox_sph_validate(a), prox_rcc_validate(b));
     if (st != PROX_OK) return fail(st); /* before any dereference: null inputs */
-    prox_cframe g = prox_cframe_make(b);
+    prox_cyl g = cyl_of(b);
     double c = cyl_point_clear(&g, a->center) - a->radius;
     return finish(c, prox_shape_from_sph(*a), prox_shape_from_rcc(*b));
 }
@@ -111,11 +113,11 @@ PROX_API prox_contain_result prox_rcc_in_box(const prox_rcc *a, const prox_box *
     if (st != PROX_OK) return fail(st); /* before any dereference: null inputs */
     /* support of the rim along +-a_k: |gamma_k| + r |a_k - (a_k.w) w| */
     double c = INFINITY;
-    prox_cframe g = prox_cframe_make(a);
+    prox_cyl g = cyl_of(a);
     prox_bframe B = prox_bframe_make(b);
     for (int top = 0; top < 2; ++top) {
         double l[3];
-        prox_bframe_local(&B, prox_cframe_rim_center(&g, top), l);
+        prox_bframe_local(&B, g.cap[top], l);
         for (int k = 0; k < 3; ++k)
             c = fmin(c, B.h[k] - fabs(l[k]) - g.r * prox_v3_norm(prox_v3_reject(B.a[k], g.w)));
     }
@@ -128,9 +130,9 @@ PROX_API prox_contain_result prox_rcc_in_sph(const prox_rcc *a, const prox_sph *
     if (st != PROX_OK) return fail(st); /* before any dereference: null inputs */
     /* farthest rim point from the centre: sqrt(axial^2 + (rho + r)^2) */
     double c = INFINITY;
-    prox_cframe g = prox_cframe_make(a);
+    prox_cyl g = cyl_of(a);
     for (int top = 0; top < 2; ++top) {
-        prox_vec3 d = prox_v3_sub(b->center, prox_cframe_rim_center(&g, top));
+        prox_vec3 d = prox_v3_sub(b->center, g.cap[top]);
         double ax = prox_v3_dot(d, g.w), rho = prox_v3_norm(prox_v3_mad(d, -ax, g.w));
         c = fmin(c, b->radius - hypot(ax, rho + g.r));
     }
@@ -141,15 +143,8 @@ PROX_API prox_contain_result prox_rcc_in_rcc(const prox_rcc *a, const prox_rcc *
 {
     prox_status st = prox_valid2(prox_rcc_validate(a), prox_rcc_validate(b));
     if (st != PROX_OK) return fail(st); /* before any dereference: null inputs */
-    /* each rim: axial extent t_c +- r |w_B - (w_B.w_A) w_A|, radial max distance */
-    double c = INFINITY;
-    prox_cframe A = prox_cframe_make(a), B = prox_cframe_make(b);
-    double s = A.r * prox_v3_norm(prox_v3_reject(B.w, A.w));
-    for (int top = 0; top < 2; ++top) {
-        prox_vec3 ctr = prox_cframe_rim_center(&A, top);
-        double tc = prox_v3_dot(prox_v3_sub(ctr, B.base), B.w);
-        c = fmin(c, fmin(tc - s, B.h - tc - s));
-        c = fmin(c, B.r - prox_circle_line_max_dist(ctr, A.w, A.r, B.base, B.w));
-    }
+    /* each rim: axial extent t_c +- r |w_A x w_B|, radial max distance (core/cyl_contain.c) */
+    prox_cyl A = cyl_of(a), B = cyl_of(b);
+    double c = prox_cyl_in_cyl_clearance(&A, &B);
     return finish(c, prox_shape_from_rcc(*a), prox_shape_from_rcc(*b));
 }

@@ -8,14 +8,12 @@
  * Feet of the common perpendicular (t1 on a, t2 on b, unit axes d1, d2, n = d1 x d2, D = b.base - a.base):
  *   t1 = ((D x d2).n) / |n|^2, t2 = ((D x d1).n) / |n|^2, signed axis distance (D.n)/|n|;
  * cross products rather than the normal equations (no cancellation in the determinant).
- * Parallel axes (|n| <= PAR_TOL; Sec. 3.1 "q1 = q2 = 0"): f3 = -f4 and every axial position is a
+ * Parallel axes (|n| <= PROX_TOL_PARALLEL; Sec. 3.1 "q1 = q2 = 0"): f3 = -f4 and every axial position is a
  * solution: set = 1, feet at a.base and its projection on b's axis.
  * Parameters: s[0] = axial parameter of the foot (length units), s[1] = angle of the surface point in
  * the frame prox_fcircle_make(base, dir, r). Input: radii > 0, dirs finite non-zero (normalised); heights
  * are ignored. */
 #include "distance/prim_common.h"
-
-#define PAR_TOL 1e-12
 
 /* Angle in [0, 2pi) of direction e in the frame of the circle with unit normal w. */
 static double frame_angle(prox_vec3 w, prox_vec3 e)
@@ -38,7 +36,7 @@ PROX_API prox_prim_result prox_cylsurf_cylsurf_inf(const prox_cylsurf *a, const 
     }
     prox_vec3 n = prox_v3_cross(d1, d2), e;
     double nn = prox_v3_norm(n), t1, t2, axis_dist;
-    if (nn <= PAR_TOL) { /* parallel axes: a continuum of feet, representative at a.base */
+    if (nn <= PROX_TOL_PARALLEL) { /* parallel axes: a continuum of feet, representative at a.base */
         t1 = 0.0;
         t2 = -prox_v3_dot(D, d2);
         prox_vec3 perp = prox_v3_reject(D, d2); /* from a.base to its foot on b's axis */

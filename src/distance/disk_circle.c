@@ -17,8 +17,6 @@
  * Input: radii > 0, normals finite non-zero (normalised). */
 #include "distance/prim_common.h"
 
-#define PAR_TOL 1e-12
-
 /* Candidate: circle point at th2 against the disk interior. Accepted when its projection lies in the
  * disk; distance |h| (0 when force_zero: a crossing point). */
 static void consider_foot(prox_prim_result *best, const prox_fcircle *d, const prox_fcircle *c, double th2,
@@ -83,7 +81,7 @@ PROX_API prox_prim_result prox_disk_circle(const prox_disk *d, const prox_circle
     best.distance = INFINITY;
     double a = prox_v3_dot(fc.u, fd.n), b = prox_v3_dot(fc.v, fd.n), ab = hypot(a, b);
     double h0 = prox_v3_dot(prox_v3_sub(fc.c, fd.c), fd.n);
-    if (ab <= PAR_TOL) {
+    if (ab <= PROX_TOL_PARALLEL) {
         if (parallel_over_disk(&best, &fd, &fc)) return best;
         consider_rim(&best, &fd, &fc);
         return best;

@@ -17,8 +17,6 @@
  * Input: radius > 0, normal finite non-zero (normalised). */
 #include "distance/prim_common.h"
 
-#define PAR_TOL 1e-12
-
 /* Radial distance of the projection of x from the centre (and its angle) in the disk frame. */
 static double radial(const prox_fcircle *f, prox_vec3 x, double *ang)
 {
@@ -58,7 +56,7 @@ static int parallel_over_disk(const prox_fcircle *f, const prox_segment *s)
 {
     prox_vec3 d = prox_v3_sub(s->b, s->a);
     double len = prox_v3_norm(d);
-    if (!(len > 0.0) || !(fabs(prox_v3_dot(d, f->n)) <= PAR_TOL * len)) return 0;
+    if (!(len > 0.0) || !(fabs(prox_v3_dot(d, f->n)) <= PROX_TOL_PARALLEL * len)) return 0;
     prox_vec3 dp = prox_v3_reject(d, f->n), ap = prox_v3_reject(prox_v3_sub(s->a, f->c), f->n);
     double dd = prox_v3_norm2(dp), t = prox_prim_clamp01(dd > 0.0 ? -prox_v3_dot(ap, dp) / dd : 0.0);
     return prox_v3_norm(prox_v3_mad(ap, t, dp)) < f->r;
@@ -73,6 +71,7 @@ PROX_API prox_prim_result prox_disk_segment(const prox_disk *d, const prox_segme
     if (crossing(&f, s, &res)) return res; /* status is PROX_OK */
     /* Step 2: endpoints against the disk, the segment against the rim. */
     prox_prim_result best = prox_circle_segment(&dk, s);
+    if (best.status != PROX_OK) return best; /* the rim's quartic failed (PROX_ENUMERIC) */
     best.s1[1] = f.r;
     prox_vec3 ends[2] = {s->a, s->b};
     for (int i = 0; i < 2; ++i) {

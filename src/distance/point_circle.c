@@ -19,7 +19,7 @@ PROX_API prox_prim_result prox_point_circle(prox_vec3 p, const prox_circle *c)
     double h = l.h, du = l.du, dv = l.dv, rho = l.rho;
     double scale = fmax(f.r, fmax(fabs(h), prox_v3_maxabs(f.c)));
     double th = 0.0;
-    if (rho <= PROX_PRIM_AXIS_TOL * scale) {
+    if (rho <= PROX_TOL_AXIS * scale) {
         res.set = 1; /* every circle point is equidistant */
     } else {
         th = prox_prim_angle(dv, du);

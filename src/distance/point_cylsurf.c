@@ -22,7 +22,7 @@ PROX_API prox_prim_result prox_point_cylsurf(prox_vec3 p, const prox_cylsurf *s)
     double zc = z < 0.0 ? 0.0 : (z > s->height ? s->height : z);
     double scale = fmax(f.r, fmax(fabs(z), fmax(s->height, prox_v3_maxabs(f.c))));
     double cu = 1.0, cv = 0.0, th = 0.0;
-    if (rho <= PROX_PRIM_AXIS_TOL * scale) {
+    if (rho <= PROX_TOL_AXIS * scale) {
         res.set = 1;
     } else {
         cu = du / rho;

@@ -1,33 +1,16 @@
-/* Internal: input validation, frames and angle conventions shared by the primitive solvers
- * (point_*.c, segment_*.c, cylsurf_cylsurf.c, disk_*.c, circle_*.c). One copy of each rule, so that
+/* Internal: input validation and local frames shared by the public primitive solvers (point_*.c,
+ * segment_*.c, cylsurf_cylsurf.c, disk_*.c, circle_*.c); the angle conventions (core/angle.h), circle
+ * frames and stationary points (core/circle.h) and tolerances (core/tol.h) are the core's, which the
+ * other modules use without this header. One copy of each rule, so that
  * every primitive entry point rejects the same inputs with the same status, in the same order:
  * null pointer -> PROX_EINVAL_ARG, non-finite value -> PROX_EINVAL_NONFINITE, radius <= 0 ->
  * PROX_EINVAL_RADIUS, zero axis / normal -> PROX_EINVAL_AXIS. */
 #ifndef PROX_DISTANCE_PRIM_COMMON_H
 #define PROX_DISTANCE_PRIM_COMMON_H
 
+#include "core/angle.h"
 #include "core/circle.h"
-
-/* Relative size (8 ulp x scene scale) below which the distance of a point from a circle's or surface's
- * axis counts as zero: every angle is then equidistant (the set case). */
-#define PROX_PRIM_AXIS_TOL (8.0 * 2.220446049250313e-16)
-
-/* Angle of the direction (x, y) in [0, 2pi) (atan2 wrapped; 2pi after rounding becomes 0). */
-static inline double prox_prim_angle(double y, double x)
-{
-    double a = atan2(y, x);
-    if (a < 0.0) a += 2.0 * PROX_PI;
-    return a < 2.0 * PROX_PI ? a : 0.0;
-}
-
-/* Any finite angle wrapped into [0, 2pi). Equals prox_prim_angle(y, x) on t = atan2(y, x): fmod is
- * exact and |atan2| < 2pi. */
-static inline double prox_prim_wrap_2pi(double t)
-{
-    t = fmod(t, 2.0 * PROX_PI);
-    if (t < 0.0) t += 2.0 * PROX_PI;
-    return t < 2.0 * PROX_PI ? t : 0.0;
-}
+#include "core/tol.h"
 
 /* Coordinates of a point x in the frame of circle f: height h along n, components du, dv along u, v
  * and the distance rho = hypot(du, dv) from the axis. */

@@ -1,19 +1,16 @@
-/* Exact minimum distance and proximal points of two solid right circular cylinders.
+/* The fast method (PROX_METHOD_FAST) for the exact minimum distance and proximal points of two solid
+ * right circular cylinders: the default of prox_rcc_distance.
  *
  * Source: Agarwal, Srivatsan & Bandyopadhyay, "Analytical determination of the proximity of two
  * right-circular cylinders in space", J. Mech. Robot. 8 (2016), Sec. 2 (Figs. 3-5) and Sec. 3.
  *
  * How a query flows (docs/design.md has the long version):
- *  1. One branch-free test (raw_window) admits both cylinders to the raw path; every pair it admits
- *     is valid, the others go through the validators.  Case 1 with well-conditioned feet is decided
- *     at once from the raw input (case1_raw, Agarwal's first level for that case): the infinite
- *     solid cylinders are L - rA - rB apart and contain the finite ones, so the S-S pair is the
- *     minimum; overlapping Case-1 pairs get their common point and root-free, division-free nesting
- *     bounds there too.
- *     Every other pair is prepared (rims only when needed) in a frame centred on A's centre, so that
+ *  1. Validate both cylinders and prepare them (core/cyl.h) in a frame centred on A's centre, so that
  *     pairs far from the origin keep their relative precision.
  *  2. Agarwal's first level: P(S1,S2) from the common perpendicular of the axes gives the case
- *     (1, 2.1/2.2, 3).
+ *     (1, 2.1/2.2, 3).  Case 1 with well-conditioned feet ends here: the infinite solid cylinders
+ *     are L - rA - rB apart and contain the finite ones, so the S-S pair is the minimum; an
+ *     overlapping Case-1 pair has its common point on the common perpendicular.
  *  3. Candidates.  For two DISJOINT convex solids the closest pair (p1, p2) lies on a pair of features
  *     (lateral surface S, end-disk interior D, rim circle C) where the distance is stationary, so it is
  *     one of: S-S on the common perpendicular, C-S (stationary points of circle-to-axis distance),
@@ -22,44 +19,31 @@
  *     attain their minimum at a C-D or C-S candidate.  Every candidate is a genuine pair of points of
  *     A x B, so min over candidates = the distance exactly, whatever subset of candidates was wrong.
  *  4. Certificate: along the contact normal n of the best candidate the projections of A and B are
- *     separated by gap(n) = -h_B(-n) - h_A(n) <= distance <= |p2 - p1| (duality); when the two agree
- *     within a few ulps of the scale, the answer is exact and no other candidate can be better.
+ *     separated by gap(n) = -h_B(-n) - h_A(n) <= distance <= |p2 - p1| (duality, Eberly's support
+ *     function); when the two agree within PROX_TOL_CERT S, the answer is exact and no other
+ *     candidate can be better.
  *  5. Order of the search, stopping at the first certificate: the PREDICTION (the features of each
  *     cylinder supporting the capsule normal, then the best candidate's normal, name the ends and the
- *     feature pair; local minimisers started from the predicted normal) settles ~86 % of random pairs;
- *     then Agarwal's hierarchy (Case 2/3: the ends nearest to the feet; a heuristic, docs/errata.md),
+ *     feature pair; local minimisers started from the predicted normal) settles most pairs; then
+ *     Agarwal's hierarchy (Case 2/3: the ends nearest to the feet; a heuristic, docs/errata.md),
  *     every other group by local Newton, and the complete quartics / degree-8 polynomials, skipping
  *     groups whose cheap lower bound cannot beat the best.
  *  6. Overlap: any candidate point that lies inside the other solid is a common point; failing that,
- *     Douglas-Rachford projections between the shrunk solids find one.  Containment (Agarwal Fig. 2)
- *     is decided exactly: A lies in B iff both rims of A lie in B (B convex, A the hull of its rims).
+ *     the core's common-point search (prox_cyl_common_point).  Every common point is checked in both
+ *     solids.  Containment (Agarwal Fig. 2) is decided exactly by the core (prox_cyl_in_cyl).
+ *  7. When nothing is certified at the end (near-touching or near-parallel contacts), the pair goes
+ *     to the closed-form method (rcc_closed_form.c), and the result says method = CLOSED_FORM.
+ *     Every answer of this method itself is proved: certified = 1.
  */
 #include <float.h>
 #include <stddef.h>
 
-#include "core/validate.h"
 #include "core/circle.h"
+#include "core/cyl.h"
+#include "core/tol.h"
+#include "core/validate.h"
+#include "distance/rcc_methods.h"
 #include "prox/distance.h"
-#include "prox/sat.h"
-
-/* RCC_OPAQUE(v): hides how an int was computed from the optimiser, so that a branch on it stays one
- * branch (gcc otherwise splits a test of yes | no into branches on yes and on no, which are coin
- * tosses where yes | no is not). */
-#if defined(__GNUC__) || defined(__clang__)
-#define RCC_NOINLINE __attribute__((noinline))
-#define RCC_OPAQUE(v) __asm__("" : "+r"(v))
-#else
-#define RCC_NOINLINE
-#define RCC_OPAQUE(v) ((void)0)
-#endif
-
-/* A cylinder prepared for the query (coordinates relative to the query origin). */
-typedef struct cyl {
-    prox_vec3 b, w, c; /* base centre, unit axis, centre */
-    double h, r;
-    prox_fcircle rim[2]; /* 0: base circle, 1: top circle */
-    prox_vec3 cap[2];    /* disk centres */
-} cyl;
 
 /* One candidate pair of points (p1 on A, p2 on B). */
 typedef struct cand {
@@ -72,7 +56,8 @@ typedef struct cand {
 
 /* Query state: best candidate so far and overlap witness. */
 typedef struct query {
-    cyl A, B;
+    prox_cyl A, B;
+    prox_fcircle rim[2][2]; /* rims of A (0) and B (1): base (0), top (1); prepared past Case 1 */
     double scale, eps; /* eps: absolute tolerance for ties and certificates, a few ulps of scale */
     cand best;
     int have_best;
@@ -80,65 +65,12 @@ typedef struct query {
     prox_vec3 common; /* a point of A and B when overlap */
     prox_vec3 nab;    /* wA x wB, computed once */
     double nn;        /* |wA x wB|^2 */
-    int parallel;     /* axes parallel to working precision */
+    int parallel;     /* no usable common perpendicular: |wA x wB| <= PROX_TOL_NO_FEET */
     int tag;          /* the groups being generated are the hierarchy's picks */
     double lower;     /* max of gap(n) over the normals evaluated so far (a lower bound) */
     int best_gap_done; /* the best candidate's own directions are already in `lower` */
     double gap;       /* the best separation seen along the best candidate's normal */
 } query;
-
-/* Prepares c (already validated; h = |axis|) without its rims (cyl_rims). */
-static void cyl_init(cyl *k, const prox_rcc *c, double h, prox_vec3 origin)
-{
-    k->h = h;
-    k->w = prox_v3_scale(c->axis, 1.0 / h);
-    k->r = c->radius;
-    k->b = prox_v3_sub(c->base, origin);
-    k->c = prox_v3_mad(k->b, 0.5 * h, k->w);
-    k->cap[0] = k->b;
-    k->cap[1] = prox_v3_mad(k->b, h, k->w);
-}
-
-/* The rims of a prepared cylinder (needed past Case 1 only).  Their frame is Duff et al.'s
- * branch-free orthonormal basis of the axis ("Building an orthonormal basis, revisited", JCGT 2017):
- * no square root, which prox_fcircle_make's any_perp needs; any frame serves, angles stay internal. */
-static void cyl_rims(cyl *k)
-{
-    prox_vec3 n = k->w;
-    double sg = copysign(1.0, n.z), a = -1.0 / (sg + n.z), bb = n.x * n.y * a;
-    prox_fcircle f;
-    f.c = k->cap[0];
-    f.n = n;
-    f.u = prox_v3(1.0 + sg * n.x * n.x * a, sg * bb, -sg * n.x);
-    f.v = prox_v3_cross(n, f.u);
-    f.r = k->r;
-    k->rim[0] = f;
-    k->rim[1] = f; /* same frame, other centre */
-    k->rim[1].c = k->cap[1];
-}
-
-/* Support function of a prepared cylinder (see rcc_support.c; same formula, prepared data). */
-static double cyl_support(const cyl *k, prox_vec3 d)
-{
-    double dw = prox_v3_dot(d, k->w);
-    return prox_v3_dot(d, k->c) + k->r * prox_v3_norm(prox_v3_mad(d, -dw, k->w)) + 0.5 * k->h * fabs(dw);
-}
-
-/* Separation of the projections of A and B on unit n: a lower bound on the distance (duality). */
-static double gap_along(const query *q, prox_vec3 n)
-{
-    return -cyl_support(&q->B, prox_v3_neg(n)) - cyl_support(&q->A, n);
-}
-
-/* Signed distance of x outside the solid cylinder k (<= 0 inside), with x's axial coordinate. */
-static int cyl_contains(const cyl *k, prox_vec3 x, double tol)
-{
-    prox_vec3 d = prox_v3_sub(x, k->b);
-    double t = prox_v3_dot(d, k->w);
-    if (t < -tol || t > k->h + tol) return 0;
-    double rt = k->r + tol; /* squared comparison: no square root on this hot path */
-    return prox_v3_norm2(prox_v3_mad(d, -t, k->w)) <= rt * rt;
-}
 
 /* Records x as a common point of the solids after checking it against both (within the ulp-level
  * slack eps: a point that close to both is at worst a touching contact).  Every overlap claim goes
@@ -146,17 +78,20 @@ static int cyl_contains(const cyl *k, prox_vec3 x, double tol)
  * perpendicular of nearly parallel axes) cannot produce a false overlap. */
 static void note_common(query *q, prox_vec3 x)
 {
-    if (q->overlap || !cyl_contains(&q->A, x, q->eps) || !cyl_contains(&q->B, x, q->eps)) return;
+    if (q->overlap || !prox_cyl_contains(&q->A, x, q->eps) || !prox_cyl_contains(&q->B, x, q->eps)) return;
     q->overlap = 1;
     q->common = x;
 }
+
+/* Rim `end` (0 base, 1 top) of k, which is q->A or q->B. */
+static const prox_fcircle *rim_of(const query *q, const prox_cyl *k, int end) { return &q->rim[k == &q->B][end]; }
 
 /* Offers a candidate pair; keeps the shortest. Points inside the other solid witness overlap. */
 static void offer(query *q, prox_vec3 p1, prox_vec3 p2, prox_vec3 n, prox_pair_kind kind, prox_feature f1,
                   prox_feature f2)
 {
-    if (cyl_contains(&q->B, p1, 0.0)) note_common(q, p1);
-    if (cyl_contains(&q->A, p2, 0.0)) note_common(q, p2);
+    if (prox_cyl_contains(&q->B, p1, 0.0)) note_common(q, p1);
+    if (prox_cyl_contains(&q->A, p2, 0.0)) note_common(q, p2);
     double d = prox_v3_dist(p1, p2);
     /* A candidate that overflowed (a rim-rim solve normalised by a radius 1e-150 of the pair's
      * extent) is never taken: a NaN best would refuse every later candidate. */
@@ -166,8 +101,8 @@ static void offer(query *q, prox_vec3 p1, prox_vec3 p2, prox_vec3 n, prox_pair_k
      * is evaluated lazily by certified(); a near-tie's normal is kept here, because it may certify
      * the winner better (a near-parallel S-S normal is poor while the rim against the side, tied
      * with it, has an exact one). */
-    if (q->have_best && fabs(d - q->best.d) <= 1e-9 * q->scale) {
-        double g = gap_along(q, better ? q->best.n : n);
+    if (q->have_best && fabs(d - q->best.d) <= PROX_TOL_TIE * q->scale) {
+        double g = prox_cyl_gap(&q->A, &q->B, better ? q->best.n : n);
         if (g > q->lower) q->lower = g;
     }
     if (!better) return;
@@ -181,7 +116,7 @@ static void offer(query *q, prox_vec3 p1, prox_vec3 p2, prox_vec3 n, prox_pair_k
 
 /* Feet of the common perpendicular: s on A's axis, t on B's axis (lengths from the bases).
  * Uses n = wA x wB, s = ((bB-bA) x wB).n / |n|^2, t = ((bB-bA) x wA).n / |n|^2 (no 1 - (wA.wB)^2). */
-static void axis_feet(const cyl *A, const cyl *B, prox_vec3 n, double nn, double *s, double *t)
+static void axis_feet(const prox_cyl *A, const prox_cyl *B, prox_vec3 n, double nn, double *s, double *t)
 {
     prox_vec3 d0 = prox_v3_sub(B->b, A->b);
     *s = prox_v3_dot(prox_v3_cross(d0, B->w), n) / nn;
@@ -190,8 +125,7 @@ static void axis_feet(const cyl *A, const cyl *B, prox_vec3 n, double nn, double
 
 /* The common point on the common perpendicular of the axes (feet f1 on A's, f2 on B's) when they are
  * at most rA + rB apart: the point dividing f1 f2 in the ratio rA : rB, which is |f2 - f1| rA /
- * (rA + rB) <= rA from A's axis and |f2 - f1| rB / (rA + rB) <= rB from B's (case1_overlap takes the
- * same point). */
+ * (rA + rB) <= rA from A's axis and |f2 - f1| rB / (rA + rB) <= rB from B's. */
 static prox_vec3 between_axes(prox_vec3 f1, prox_vec3 f2, double ra, double rb)
 {
     return prox_v3_mad(f1, ra / (ra + rb), prox_v3_sub(f2, f1));
@@ -209,14 +143,13 @@ static void cand_lat_lat(query *q, double s, double t)
         note_common(q, between_axes(f1, f2, q->A.r, q->B.r));
         return;
     }
-    u = prox_v3_scale(u, 1.0 / L);
-    if (q->nn >= 1e-6) {
-        /* Well-conditioned axes (the range of the Case-1 shortcut in search): the unit common normal
-         * from the cross product, whose residual along the axes is ~ eps / |wA x wB|, and each point
-         * from its own foot (the distance is then second order in the feet's errors), as in
-         * case1_raw.  The rejections below converge only by (wA.wB)^2 per pair; for a short common
-         * perpendicular between bases far apart, their residual times |(bB - bA).wB| left the
-         * distance up to 1.2e-11 S off (docs/errata.md, numerical pitfalls). */
+    if (q->nn >= PROX_TOL_WELL_COND2) {
+        /* Well-conditioned axes (the range where Case 1 ends here, case1_settles): the unit common
+         * normal from the cross product, whose residual along the axes is ~ eps / |wA x wB|, and each
+         * point from its own foot (the distance is then second order in the feet's errors).  The
+         * rejections below converge only by (wA.wB)^2 per pass; for a short common perpendicular
+         * between bases far apart, their residual times |(bB - bA).wB| would leave the distance up to
+         * 1.2e-11 S off (docs/errata.md, numerical pitfalls). */
         prox_vec3 v = prox_v3_scale(q->nab, (prox_v3_dot(u, q->nab) < 0.0 ? -1.0 : 1.0) / sqrt(q->nn));
         offer(q, prox_v3_mad(f1, q->A.r, v), prox_v3_mad(f2, -q->B.r, v), v, PROX_PAIR_SS,
               PROX_FEAT_LATERAL, PROX_FEAT_LATERAL);
@@ -227,9 +160,10 @@ static void cand_lat_lat(query *q, double s, double t)
      * made perpendicular to both axes to rounding (alternate rejections), the line distance measured
      * along it, and B's point put on that normal; used when it is a genuine point of B (its axial
      * coordinate within B's height).  Here the search certifies the candidate like any other. */
+    u = prox_v3_scale(u, 1.0 / L);
     prox_vec3 v = prox_v3_reject(prox_v3_reject(prox_v3_reject(u, q->A.w), q->B.w), q->A.w);
     double vl = prox_v3_norm(v);
-    if (vl > 0.5) {
+    if (vl > 0.5) { /* u was mostly perpendicular to the axes, as the common perpendicular should be */
         v = prox_v3_scale(v, 1.0 / vl);
         double lv = prox_v3_dot(prox_v3_sub(q->B.b, q->A.b), v);
         prox_vec3 p2 = prox_v3_mad(f1, lv - q->B.r, v);
@@ -251,10 +185,10 @@ static prox_feature cap_feature(int end) { return end ? PROX_FEAT_TOP : PROX_FEA
 /* Rim `end` of cylinder `rc` against the lateral surface of `lc`; `rim_is_a` orders the output. */
 /* Offers the rim points at the given angles against the lateral surface of lc (those whose foot on
  * lc's axis lies on the finite axis); a rim point within lc's radius there is a common point. */
-static void rim_lat_offer(query *q, const cyl *rc, int end, const cyl *lc, int rim_is_a, const prox_unit2 *th,
+static void rim_lat_offer(query *q, const prox_cyl *rc, int end, const prox_cyl *lc, int rim_is_a, const prox_unit2 *th,
                           int cnt)
 {
-    const prox_fcircle *C = &rc->rim[end];
+    const prox_fcircle *C = rim_of(q, rc, end);
     for (int i = 0; i < cnt; ++i) {
         prox_vec3 x = prox_fcircle_at(C, th[i]);
         prox_vec3 dx = prox_v3_sub(x, lc->b);
@@ -276,12 +210,14 @@ static void rim_lat_offer(query *q, const cyl *rc, int end, const cyl *lc, int r
 }
 
 /* Complete path: every stationary point of the rim-to-axis distance (quartic, Sec. 3.3). */
-static void cand_rim_lat(query *q, const cyl *rc, int end, const cyl *lc, int rim_is_a)
+static void cand_rim_lat(query *q, const prox_cyl *rc, int end, const prox_cyl *lc, int rim_is_a)
 {
     double th[4];
     prox_unit2 a[4] = {{1.0, 0.0}}; /* the rim coaxial with the other axis: every point is equivalent */
     int cnt = 0;
-    if (prox_circle_line_stationary(&rc->rim[end], lc->b, lc->w, th, &cnt)) cnt = 1;
+    /* A quartic that could not be solved (< 0) offers nothing: every candidate is certified, and an
+     * uncertified query goes to the closed-form method. */
+    if (prox_circle_line_stationary(rim_of(q, rc, end), lc->b, lc->w, th, &cnt) == 1) cnt = 1;
     else
         for (int i = 0; i < cnt; ++i) a[i] = (prox_unit2){cos(th[i]), sin(th[i])};
     rim_lat_offer(q, rc, end, lc, rim_is_a, a, cnt);
@@ -290,9 +226,9 @@ static void cand_rim_lat(query *q, const cyl *rc, int end, const cyl *lc, int ri
 /* Fast path: Newton from the rim point extreme along dir (the predicted contact normal, pointing
  * from the rim towards the side), or when dir is NULL from the rim point nearest to the other axis
  * (towards the axis' closest point to the rim centre); certified afterwards like every candidate. */
-static void cand_rim_lat_local(query *q, const cyl *rc, int end, const cyl *lc, int rim_is_a, const prox_vec3 *dir)
+static void cand_rim_lat_local(query *q, const prox_cyl *rc, int end, const prox_cyl *lc, int rim_is_a, const prox_vec3 *dir)
 {
-    const prox_fcircle *C = &rc->rim[end];
+    const prox_fcircle *C = rim_of(q, rc, end);
     prox_vec3 g;
     if (dir) {
         g = *dir;
@@ -308,9 +244,9 @@ static void cand_rim_lat_local(query *q, const cyl *rc, int end, const cyl *lc, 
 
 /* The rim's points extreme in the disk's normal direction project onto the disk plane; a projection
  * inside the disk gives a candidate.  Parallel planes: the rim point nearest the disk's axis. */
-static void cand_rim_disk(query *q, const cyl *rc, int rend, const cyl *dc, int dend, int rim_is_a)
+static void cand_rim_disk(query *q, const prox_cyl *rc, int rend, const prox_cyl *dc, int dend, int rim_is_a)
 {
-    const prox_fcircle *C = &rc->rim[rend];
+    const prox_fcircle *C = rim_of(q, rc, rend);
     prox_vec3 m = dc->w, D = dc->cap[dend];
     /* The rim projects onto the disk plane inside the circle of radius r around its centre's
      * projection: when that circle misses the disk, no candidate can exist. */
@@ -324,7 +260,7 @@ static void cand_rim_disk(query *q, const cyl *rc, int rend, const cyl *dc, int 
     if (q->have_best && fabs(hc) - C->r * amp >= q->best.d) return;
     prox_vec3 dirs[2];
     int nd;
-    if (amp > 64.0 * DBL_EPSILON) { /* the two extreme points */
+    if (amp > PROX_TOL_NOISE) { /* the two extreme points */
         prox_vec3 e = prox_v3_add(prox_v3_scale(C->u, mu / amp), prox_v3_scale(C->v, mv / amp));
         dirs[0] = e;
         dirs[1] = prox_v3_neg(e);
@@ -335,7 +271,7 @@ static void cand_rim_disk(query *q, const cyl *rc, int rend, const cyl *dc, int 
         double gl = prox_v3_norm(g);
         /* A radial offset at rounding level is noise in a random direction: any rim point is then as
          * good (coaxial faces), so take the frame's u. */
-        dirs[0] = gl > 64.0 * DBL_EPSILON * (prox_v3_norm(g0) + C->r) ? prox_v3_scale(g, 1.0 / gl) : C->u;
+        dirs[0] = gl > PROX_TOL_NOISE * (prox_v3_norm(g0) + C->r) ? prox_v3_scale(g, 1.0 / gl) : C->u;
         nd = 1;
     }
     for (int i = 0; i < nd; ++i) {
@@ -356,21 +292,21 @@ static void cand_rim_disk(query *q, const cyl *rc, int rend, const cyl *dc, int 
 /* Offers the rim-rim pair at angle th on A's rim and its closest point on B's rim. */
 static void rim_rim_offer(query *q, int ea, int eb, prox_unit2 th)
 {
-    const prox_fcircle *CA = &q->A.rim[ea], *CB = &q->B.rim[eb];
+    const prox_fcircle *CA = &q->rim[0][ea], *CB = &q->rim[1][eb];
     prox_vec3 x = prox_fcircle_at(CA, th);
     prox_vec3 y = prox_fcircle_closest(CB, x, NULL);
     /* Normal from the points when they are well apart (direction error ~ eps S / d); else from the
      * two tangents, which stays accurate when |y - x| is tiny. */
     prox_vec3 yx = prox_v3_sub(y, x), n;
     double d = prox_v3_norm(yx);
-    if (d > 1e-4 * q->scale) {
+    if (d > PROX_TOL_CC_NEAR * q->scale) {
         n = prox_v3_scale(yx, 1.0 / d);
     } else {
         prox_vec3 ta = prox_v3_add(prox_v3_scale(CA->u, -th.s), prox_v3_scale(CA->v, th.c));
         prox_vec3 tb = prox_v3_cross(CB->n, prox_v3_sub(y, CB->c));
         n = prox_v3_cross(ta, tb);
         double nl = prox_v3_norm(n), tbl = prox_v3_norm(tb);
-        if (nl > 1e-6 * tbl) {
+        if (nl > PROX_TOL_TANGENT * tbl) {
             n = prox_v3_scale(n, 1.0 / nl);
             if (prox_v3_dot(n, yx) < 0.0) n = prox_v3_neg(n);
         } else {
@@ -380,27 +316,26 @@ static void rim_rim_offer(query *q, int ea, int eb, prox_unit2 th)
     offer(q, x, y, n, PROX_PAIR_CC, rim_feature(ea), rim_feature(eb));
 }
 
-/* Every stationary point of the rim pair through the degree-8 polynomial (the complete path). */
-static prox_status cand_rim_rim(query *q, int ea, int eb)
+/* Every stationary point of the rim pair through the degree-8 polynomial (the complete path), its
+ * real roots by the derivative chain.  A polynomial that could not be rooted offers nothing, as for
+ * the quartic. */
+static void cand_rim_rim(query *q, int ea, int eb)
 {
     double th[8];
     int cnt = 0;
-    int rc = prox_circle_circle_stationary(&q->A.rim[ea], &q->B.rim[eb], th, &cnt);
-    if (rc < 0) return (prox_status)(-rc);
-    if (rc == 1) { /* coaxial rims: every point is equivalent */
-        th[0] = 0.0;
+    if (prox_circle_circle_stationary(&q->rim[0][ea], &q->rim[1][eb], PROX_ROOTS_CHAIN, th, &cnt) == 1) {
+        th[0] = 0.0; /* coaxial rims: every point is equivalent */
         cnt = 1;
     }
     for (int i = 0; i < cnt; ++i) rim_rim_offer(q, ea, eb, (prox_unit2){cos(th[i]), sin(th[i])});
-    return PROX_OK;
 }
 
 /* Fast path: Newton from the point of A's rim extreme in the estimated contact direction nest. */
 static void cand_rim_rim_local(query *q, int ea, int eb, prox_vec3 nest)
 {
-    const prox_fcircle *CA = &q->A.rim[ea];
+    const prox_fcircle *CA = &q->rim[0][ea];
     prox_unit2 a0 = prox_unit2_of(prox_v3_dot(nest, CA->u), prox_v3_dot(nest, CA->v));
-    rim_rim_offer(q, ea, eb, prox_circle_circle_local(CA, &q->B.rim[eb], a0));
+    rim_rim_offer(q, ea, eb, prox_circle_circle_local(CA, &q->rim[1][eb], a0));
 }
 
 /* ---- certificates and lower bounds ---- */
@@ -411,10 +346,10 @@ static int certified(query *q, double *gap_out)
     if (!q->have_best) return 0;
     if (!q->best_gap_done) { /* its feature normal first, then the direction of p2 - p1 */
         q->best_gap_done = 1;
-        double g = gap_along(q, q->best.n);
+        double g = prox_cyl_gap(&q->A, &q->B, q->best.n);
         if (g > q->lower) q->lower = g;
         if (q->lower < q->best.d - q->eps && q->best.d > 0.0) {
-            g = gap_along(q, prox_v3_scale(prox_v3_sub(q->best.p2, q->best.p1), 1.0 / q->best.d));
+            g = prox_cyl_gap(&q->A, &q->B, prox_v3_scale(prox_v3_sub(q->best.p2, q->best.p1), 1.0 / q->best.d));
             if (g > q->lower) q->lower = g;
         }
     }
@@ -433,7 +368,7 @@ static int settle(query *q)
  * one circle's heights over the other's plane (half-width r sqrt(1 - (wA.wB)^2) = r |wA x wB|). */
 static double rim_rim_lower_bound(const query *q, int ea, int eb)
 {
-    const prox_fcircle *CA = &q->A.rim[ea], *CB = &q->B.rim[eb];
+    const prox_fcircle *CA = &q->rim[0][ea], *CB = &q->rim[1][eb];
     prox_vec3 d = prox_v3_sub(CB->c, CA->c);
     double lb = prox_v3_norm(d) - CA->r - CB->r;
     double sn = prox_v3_norm(prox_v3_cross(CA->n, CB->n));
@@ -446,141 +381,22 @@ static double rim_rim_lower_bound(const query *q, int ea, int eb)
 
 /* Lower bound for a rim against the other lateral surface: distance from the rim's centre to the
  * other axis line minus both radii (the surface lies within r of its axis). */
-static double rim_lat_lower_bound(const prox_fcircle *C, const cyl *lc)
+static double rim_lat_lower_bound(const prox_fcircle *C, const prox_cyl *lc)
 {
     prox_vec3 d = prox_v3_sub(C->c, lc->b);
     double rho = prox_v3_norm(prox_v3_mad(d, -prox_v3_dot(d, lc->w), lc->w));
     return rho - C->r - lc->r;
 }
 
-/* ---- containment (Agarwal Fig. 2), exact ---- */
-
-/* 1 when the circle (centre c, unit normal n, radius r) lies in the closed solid cylinder k (within
- * tol): its axial range within [0, h] and its farthest point from k's axis within r.  The cheap
- * tests first; the farthest point (prox_circle_line_max_dist) only when they do not decide. */
-static int circle_in_cyl(prox_vec3 c, prox_vec3 n, double r, const cyl *k, double tol)
-{
-    prox_vec3 dc = prox_v3_sub(c, k->b);
-    double tc = prox_v3_dot(dc, k->w);
-    double half = r * prox_v3_norm(prox_v3_cross(n, k->w));
-    if (tc - half < -tol || tc + half > k->h + tol) return 0;
-    /* Radially: the circle lies within rho_c + r of the axis and reaches at least max(rho_c, r)
-     * (its projection is an ellipse of semi-major axis r centred rho_c from the axis). */
-    prox_vec3 radial = prox_v3_mad(dc, -tc, k->w);
-    double rho_c = prox_v3_norm(radial);
-    if (rho_c + r <= k->r + tol) return 1;
-    if (fmax(rho_c, r) > k->r + tol) return 0;
-    /* Support function along the radial direction m of the centre (perpendicular to k's axis): the
-     * circle reaches rho_c + r |m x n| from the axis there; beyond r it is not inside. */
-    if (rho_c > 0.0 && rho_c + r * prox_v3_norm(prox_v3_cross(prox_v3_scale(radial, 1.0 / rho_c), n)) > k->r + tol)
-        return 0;
-    return prox_circle_line_max_dist(c, n, r, k->b, k->w) <= k->r + tol;
-}
-
-/* A lies in B iff both rims of A do (B convex, A the hull of its rims); a nested cylinder contains
- * its centre, the cheapest rejection.  Needs no rim frames. */
-static int cyl_in_cyl(const cyl *in, const cyl *out, double tol)
-{
-    return cyl_contains(out, in->c, tol) && circle_in_cyl(in->cap[0], in->w, in->r, out, tol) &&
-           circle_in_cyl(in->cap[1], in->w, in->r, out, tol);
-}
-
 /* ---- overlap search ---- */
 
-/* Closest point to x of the cylinder k shrunk by delta (radius r - delta, axial range [delta,
- * h - delta]); x itself when inside. */
-static prox_vec3 cyl_project(const cyl *k, prox_vec3 x, double delta)
+/* Looks for a common point by the core's search (each axis clipped by the other solid, the
+ * mid-disks' chord, Douglas-Rachford between the shrunk solids, `iters` steps per margin) started at
+ * x, and records it. */
+static void find_common_point(query *q, prox_vec3 x, int iters)
 {
-    prox_vec3 d = prox_v3_sub(x, k->b);
-    double t = prox_v3_dot(d, k->w);
-    prox_vec3 radial = prox_v3_mad(d, -t, k->w);
-    double rho = prox_v3_norm(radial), r = k->r - delta;
-    double tc = t < delta ? delta : (t > k->h - delta ? k->h - delta : t);
-    if (tc == t && rho <= r) return x;
-    if (rho > r) radial = prox_v3_scale(radial, r / rho);
-    return prox_v3_add(prox_v3_mad(k->b, tc, k->w), radial);
-}
-
-/* The part of the axis segment of `seg` inside the solid cylinder k: 1 and its midpoint in *x when not
- * empty.  A point of it is in both. */
-static int axis_inside(const cyl *seg, const cyl *k, prox_vec3 *x)
-{
-    prox_vec3 top = prox_v3_mad(seg->b, seg->h, seg->w);
-    double s0, s1;
-    if (!prox_segment_clip_solid_cyl(seg->b, top, k->b, k->w, k->h, k->r, 0.0, &s0, &s1)) return 0;
-    *x = prox_v3_mad(seg->b, 0.5 * (s0 + s1) * seg->h, seg->w);
-    return 1;
-}
-
-/* Where the mid-planes of two crossing cylinders meet, the chords of the two mid-disks (radius r
- * around each centre) on that line: a point of their overlap lies in both solids (a mid-disk is in
- * its cylinder).  The case of two thin disks crossing, which neither axis reaches. */
-static int middisks_meet(const cyl *A, const cyl *B, prox_vec3 *x)
-{
-    prox_vec3 l = prox_v3_cross(A->w, B->w);
-    double ll = prox_v3_norm2(l);
-    if (!(ll > 1e-24)) return 0;
-    /* the point of the line nearest to A's centre: in both planes, x = cA + a (wA x l) with
-     * (x - cB).wB = 0 */
-    prox_vec3 m = prox_v3_cross(A->w, l);
-    double den = prox_v3_dot(m, B->w);
-    if (den == 0.0) return 0;
-    prox_vec3 p = prox_v3_mad(A->c, prox_v3_dot(prox_v3_sub(B->c, A->c), B->w) / den, m);
-    prox_vec3 u = prox_v3_scale(l, 1.0 / sqrt(ll));
-    double lo = -INFINITY, hi = INFINITY;
-    const cyl *k2[2] = {A, B};
-    for (int i = 0; i < 2; ++i) { /* |p + t u - c|^2 <= r^2 on the line (u is in the plane) */
-        prox_vec3 e = prox_v3_sub(p, k2[i]->c);
-        double b = prox_v3_dot(e, u), c = prox_v3_norm2(e) - k2[i]->r * k2[i]->r, disc = b * b - c;
-        if (disc < 0.0) return 0;
-        double sq = sqrt(disc);
-        lo = fmax(lo, -b - sq);
-        hi = fmin(hi, -b + sq);
-    }
-    if (!(lo <= hi)) return 0;
-    *x = prox_v3_mad(p, 0.5 * (lo + hi), u);
-    return 1;
-}
-
-/* Alternating projections between the solids shrunk by a margin: when the shrunk solids still
- * intersect, the iterates enter them and so lie strictly inside both originals after finitely
- * many steps (plain projections only approach the intersection from outside).  Margins shrink from
- * a quarter of the smallest dimension to 0.  Returns 1 with a common point, else 0 with the last
- * iterate in *last. */
-static int find_common_point(query *q, prox_vec3 x, int iters, prox_vec3 *last)
-{
-    /* Exact candidates first, for intersections too thin for the projections to enter quickly
-     * (a needle through a pancake, two pancakes crossing): each axis clipped by the other solid,
-     * the two mid-disks' common chord. */
     prox_vec3 c;
-    if (axis_inside(&q->A, &q->B, &c)) note_common(q, c);
-    if (!q->overlap && axis_inside(&q->B, &q->A, &c)) note_common(q, c);
-    if (!q->overlap && middisks_meet(&q->A, &q->B, &c)) note_common(q, c);
-    if (q->overlap) return 1;
-    double dim = fmin(fmin(q->A.r, 0.5 * q->A.h), fmin(q->B.r, 0.5 * q->B.h));
-    static const double margins[] = {0.25, 0.02, 1e-3, 1e-5, 0.0};
-    for (int m = 0; m < 5; ++m) {
-        double delta = margins[m] * dim;
-        /* Douglas-Rachford: z <- z + P_B(2 P_A(z) - z) - P_A(z); the shadow P_A(z) reaches a point of
-         * the (shrunk) intersection when it is not empty, much faster than alternating projections
-         * where the surfaces meet at a shallow angle. */
-        prox_vec3 z = x;
-        for (int i = 0; i < iters; ++i) {
-            prox_vec3 a = cyl_project(&q->A, z, delta);
-            if (cyl_contains(&q->B, a, 0.0)) {
-                note_common(q, a);
-                return 1;
-            }
-            prox_vec3 b = cyl_project(&q->B, prox_v3_sub(prox_v3_scale(a, 2.0), z), delta);
-            if (cyl_contains(&q->A, b, 0.0)) {
-                note_common(q, b);
-                return 1;
-            }
-            z = prox_v3_add(z, prox_v3_sub(b, a));
-            *last = a;
-        }
-    }
-    return 0;
+    if (prox_cyl_common_point(&q->A, &q->B, x, iters, q->eps, &c)) note_common(q, c);
 }
 
 /* ---- the hierarchy and the complete search ---- */
@@ -611,10 +427,10 @@ static prox_agarwal_case classify(query *q, int *ea, int *eb, double *s_out, dou
 /* Rim against lateral surface unless it cannot produce a better candidate: its lower bound is not
  * below the best so far, or the rim's axial range along the other axis misses [0, h] (every
  * stationary point would then have its foot off the finite axis). */
-static void rim_lat_pruned(query *q, const cyl *rc, int end, const cyl *lc, int rim_is_a, int local,
+static void rim_lat_pruned(query *q, const prox_cyl *rc, int end, const prox_cyl *lc, int rim_is_a, int local,
                            const prox_vec3 *dir)
 {
-    const prox_fcircle *C = &rc->rim[end];
+    const prox_fcircle *C = rim_of(q, rc, end);
     double tc = prox_v3_dot(prox_v3_sub(C->c, lc->b), lc->w);
     double half = C->r * prox_v3_norm(prox_v3_cross(C->n, lc->w));
     if (tc + half < 0.0 || tc - half > lc->h) return;
@@ -657,18 +473,17 @@ static void closed_form_groups(query *q, int ea, int eb, prox_agarwal_case cs, i
 
 /* Rim pairs in order of the hierarchy (nearest ends first), skipping those that cannot beat the
  * best; `full` selects the complete degree-8 path, else the local fast path from two starts. */
-static prox_status rim_rim_groups(query *q, int ea0, int eb0, prox_agarwal_case cs, int full)
+static void rim_rim_groups(query *q, int ea0, int eb0, prox_agarwal_case cs, int full)
 {
     for (int k = 0; k < 4; ++k) {
         int ea = k < 2 ? ea0 : !ea0, eb = (k % 2) == 0 ? eb0 : !eb0;
         if (q->have_best && rim_rim_lower_bound(q, ea, eb) >= q->best.d) continue;
         q->tag = k == 0 && cs != PROX_CASE_1;
         if (full) {
-            prox_status st = cand_rim_rim(q, ea, eb);
-            if (st != PROX_OK) return st;
+            cand_rim_rim(q, ea, eb);
             if (settle(q)) break;
         } else { /* two starts: the centre line, then the best normal so far; stop once certified */
-            cand_rim_rim_local(q, ea, eb, prox_v3_sub(q->B.rim[eb].c, q->A.rim[ea].c));
+            cand_rim_rim_local(q, ea, eb, prox_v3_sub(q->rim[1][eb].c, q->rim[0][ea].c));
             if (settle(q)) break;
             if (q->have_best) cand_rim_rim_local(q, ea, eb, q->best.n);
             if (settle(q)) break;
@@ -676,7 +491,6 @@ static prox_status rim_rim_groups(query *q, int ea0, int eb0, prox_agarwal_case 
         q->tag = 0;
     }
     q->tag = 0;
-    return PROX_OK;
 }
 
 /* ---- prediction: the features that support a normal ---- */
@@ -689,12 +503,12 @@ enum { SUP_LAT, SUP_RIM, SUP_DISK };
  * else the rim; *end is the end n points to, or for the lateral surface the end nearer to the point
  * p of k that the normal came from.  Only a guess of the final features: the candidates it selects
  * are certified like any other. */
-static int support_feature(const cyl *k, prox_vec3 n, prox_vec3 p, int *end)
+static int support_feature(const prox_cyl *k, prox_vec3 n, prox_vec3 p, int *end)
 {
     double t = prox_v3_dot(n, k->w);
     *end = t > 0.0;
-    if (fabs(t) > 1.0 - 5e-5) return SUP_DISK;
-    if (fabs(t) >= 1e-2) return SUP_RIM;
+    if (fabs(t) > 1.0 - 0.5 * PROX_PREDICT_ANGLE * PROX_PREDICT_ANGLE) return SUP_DISK; /* cos of the angle */
+    if (fabs(t) >= PROX_PREDICT_ANGLE) return SUP_RIM;
     *end = prox_v3_dot(prox_v3_sub(p, k->b), k->w) > 0.5 * k->h;
     return SUP_LAT;
 }
@@ -786,28 +600,9 @@ static int separated_cheaply(const query *q)
         double l = prox_v3_norm(dirs[i]);
         if (!(l > 0.0)) continue;
         prox_vec3 n = prox_v3_scale(dirs[i], 1.0 / l);
-        if (gap_along(q, n) > 0.0 || gap_along(q, prox_v3_neg(n)) > 0.0) return 1;
+        if (prox_cyl_gap(&q->A, &q->B, n) > 0.0 || prox_cyl_gap(&q->A, &q->B, prox_v3_neg(n)) > 0.0) return 1;
     }
     return 0;
-}
-
-static void fill_overlap(const query *q, prox_distance_result *res, prox_vec3 origin)
-{
-    res->distance = 0.0;
-    res->p1 = res->p2 = prox_v3_add(q->common, origin);
-    res->pair = PROX_PAIR_OVERLAP;
-    res->feature1 = res->feature2 = PROX_FEAT_INSIDE;
-    res->intersect = 1;
-    res->certificate_gap = 0.0;
-}
-
-/* Decides containment and, for nested pairs, reports the inner centre as the common point. */
-static void containment(query *q, prox_distance_result *res)
-{
-    res->a_in_b = cyl_in_cyl(&q->A, &q->B, 0.0);
-    res->b_in_a = cyl_in_cyl(&q->B, &q->A, 0.0);
-    if (res->a_in_b) q->common = q->A.c;
-    else if (res->b_in_a) q->common = q->B.c;
 }
 
 /* Flags a positive-dimensional set of proximal points: parallel axes with a side contact, or
@@ -815,75 +610,92 @@ static void containment(query *q, prox_distance_result *res)
 static int is_point_set(const query *q)
 {
     const cand *b = &q->best;
-    double sn = sqrt(q->nn);
-    if (b->kind == PROX_PAIR_CD && sn <= 1e-12) {
-        const cyl *rc = b->f1 == PROX_FEAT_RIM_BASE || b->f1 == PROX_FEAT_RIM_TOP ? &q->A : &q->B;
-        const cyl *dc = rc == &q->A ? &q->B : &q->A;
+    if (q->nn > PROX_TOL_PARALLEL * PROX_TOL_PARALLEL) return 0; /* axes not parallel */
+    if (b->kind == PROX_PAIR_CD) {
+        const prox_cyl *rc = b->f1 == PROX_FEAT_RIM_BASE || b->f1 == PROX_FEAT_RIM_TOP ? &q->A : &q->B;
+        const prox_cyl *dc = rc == &q->A ? &q->B : &q->A;
         prox_vec3 g = prox_v3_reject(prox_v3_sub(dc->c, rc->c), rc->w);
         return prox_v3_norm(g) < rc->r + dc->r - q->eps; /* the face projections share an area */
     }
-    if ((b->kind == PROX_PAIR_CS || b->kind == PROX_PAIR_SS) && sn <= 1e-12) {
+    if (b->kind == PROX_PAIR_CS || b->kind == PROX_PAIR_SS) {
         /* axial overlap of the two lateral surfaces, measured along A's axis */
         double t0 = prox_v3_dot(prox_v3_sub(q->B.b, q->A.b), q->A.w);
         double t1 = t0 + q->B.h * prox_v3_dot(q->B.w, q->A.w);
         double lo = fmax(0.0, fmin(t0, t1)), hi = fmin(q->A.h, fmax(t0, t1));
         return hi - lo > q->eps;
     }
-    return b->kind == PROX_PAIR_CC && sn <= 1e-12 &&
-           prox_v3_norm(prox_v3_reject(prox_v3_sub(q->B.c, q->A.c), q->A.w)) <= q->eps;
+    return b->kind == PROX_PAIR_CC && prox_v3_norm(prox_v3_reject(prox_v3_sub(q->B.c, q->A.c), q->A.w)) <= q->eps;
 }
 
-/* Steps 5-6 of the file comment: candidate groups cheapest first, each followed by the certificate;
- * then the overlap decisions.  Leaves either q->overlap with a common point or a best candidate. */
-static prox_status search(query *q, const prox_rcc *a, const prox_rcc *b, prox_agarwal_case cs, int ea, int eb,
-                          double s, double t)
+/* Case 1 of Agarwal's first level (Sec. 2, Fig. 3): both feet of the common perpendicular lie on the
+ * finite axes, which are L > rA + rB apart there (the S-S candidate of cand_lat_lat).  The infinite
+ * solid cylinders are then L - rA - rB apart and contain the finite ones, which contain the S-S pair
+ * at that distance: it is the minimum, with no certificate to compute.  Only where the feet are well
+ * conditioned (|wA x wB| >= PROX_TOL_WELL_COND: their error is eps S / |wA x wB|, and L's is second
+ * order in it); nearer to parallel the certificate checks the S-S pair like any other candidate.
+ * An overlapping Case-1 pair got its common point from cand_lat_lat. */
+static int case1_settles(query *q, prox_agarwal_case cs)
 {
-    if (cs == PROX_CASE_1 && q->have_best && !q->overlap && q->nn >= 1e-6) {
-        /* Case 1 (both feet of the common perpendicular on the finite axes) with the axes farther
-         * apart than rA + rB: the infinite solid cylinders are at distance L - rA - rB, the finite
-         * ones contain the S-S pair at that distance, so S-S is the minimum (Agarwal Sec. 2); the
-         * bound needs no certificate.  Only where the feet are well conditioned (|wA x wB| >= 1e-3:
-         * their error is ~ eps S / |wA x wB|, and L's is second order in it); nearer to parallel the
-         * certificate below checks the S-S pair like any candidate. */
-        q->lower = q->best.d;
-        return PROX_OK;
+    if (cs != PROX_CASE_1 || !q->have_best || q->overlap || q->nn < PROX_TOL_WELL_COND2) return 0;
+    q->lower = q->best.d;
+    return 1;
+}
+
+/* The rims of both cylinders, needed past Case 1 only. */
+static void prepare_rims(query *q)
+{
+    for (int e = 0; e < 2; ++e) {
+        q->rim[0][e] = prox_cyl_rim(&q->A, e);
+        q->rim[1][e] = prox_cyl_rim(&q->B, e);
     }
+}
+
+/* Steps 2-6 of the file comment after the classification: candidate groups cheapest first, each
+ * followed by the certificate, then the overlap search.  Returns 1 when the answer is proved (a
+ * certified minimum in q->best, or a checked common point), 0 when nothing could be certified (near-
+ * touching contacts, or a polynomial that could not be rooted: the caller hands the pair to the
+ * closed-form method). */
+static int search(query *q, prox_agarwal_case cs, int ea, int eb, double s, double t)
+{
+    if (case1_settles(q, cs)) return 1;
     /* Cheap overlap witnesses: either centre inside the other solid. */
-    if (cyl_contains(&q->B, q->A.c, 0.0)) note_common(q, q->A.c);
-    else if (cyl_contains(&q->A, q->B.c, 0.0)) note_common(q, q->B.c);
-    cyl_rims(&q->A); /* past Case 1 the rims are needed */
-    cyl_rims(&q->B);
-    if (!settle(q) && !q->parallel && predict(q, s, t, ea, eb)) return PROX_OK;
-    if (!settle(q) && cs != PROX_CASE_1) hierarchy_groups(q, ea, eb, cs);
-    if (!settle(q)) closed_form_groups(q, ea, eb, cs, 1); /* fast path: local Newton */
-    if (!settle(q)) rim_rim_groups(q, ea, eb, cs, 0);
-    prox_vec3 last = q->A.c;
-    if (!settle(q) && !(q->gap > 0.0) && !separated_cheaply(q)) /* quick overlap search */
+    if (prox_cyl_contains(&q->B, q->A.c, 0.0)) note_common(q, q->A.c);
+    else if (prox_cyl_contains(&q->A, q->B.c, 0.0)) note_common(q, q->B.c);
+    if (settle(q)) return 1; /* a common point, or a certified S-S pair: no rim is needed */
+    prepare_rims(q);
+    if (!q->parallel && predict(q, s, t, ea, eb)) return 1;
+    if (cs != PROX_CASE_1) hierarchy_groups(q, ea, eb, cs);
+    if (settle(q)) return 1;
+    closed_form_groups(q, ea, eb, cs, 1); /* fast path: local Newton */
+    if (settle(q)) return 1;
+    rim_rim_groups(q, ea, eb, cs, 0);
+    if (settle(q)) return 1;
+    if (!(q->gap > 0.0) && !separated_cheaply(q)) /* quick overlap search */
         find_common_point(q, q->have_best ? prox_v3_scale(prox_v3_add(q->best.p1, q->best.p2), 0.5)
-                                          : prox_v3_scale(prox_v3_add(q->A.c, q->B.c), 0.5), 8, &last);
-    if (!settle(q)) closed_form_groups(q, ea, eb, cs, 0); /* complete: quartics, then degree 8 */
-    if (!settle(q)) {
-        prox_status st = rim_rim_groups(q, ea, eb, cs, 1);
-        if (st != PROX_OK) return st;
-    }
-    if (!settle(q) && q->have_best) {
-        /* Not certified (near-touching or near-parallel contacts): the certified separating-axis
-         * verdict (src/sat) decides; only an intersecting pair needs a common point. */
-        prox_test_result v = prox_rcc_sat(a, b);
-        if (v.status == PROX_OK && v.intersect &&
-            !find_common_point(q, prox_v3_scale(prox_v3_add(q->best.p1, q->best.p2), 0.5), 200, &last)) {
-            /* The verdict is certified: the solids intersect even though no common point was
-             * found (within its touching band, or an intersection the searches did not enter).
-             * Report the overlap, with the last iterate (in A, nearest to B) as the point. */
-            q->overlap = 1;
-            q->common = last;
-        }
-    }
-    if (!q->overlap && !q->have_best && !find_common_point(q, q->A.c, 1000, &last)) {
-        q->overlap = 1; /* no candidate at all happens only for overlapping solids: touching limit */
-        q->common = last;
-    }
-    return PROX_OK;
+                                          : prox_v3_scale(prox_v3_add(q->A.c, q->B.c), 0.5), 8);
+    if (settle(q)) return 1;
+    closed_form_groups(q, ea, eb, cs, 0); /* complete: quartics, then degree 8 */
+    if (settle(q)) return 1;
+    rim_rim_groups(q, ea, eb, cs, 1);
+    return settle(q);
+}
+
+/* Fills the result of an overlapping pair: containment decided exactly (Agarwal Fig. 2, the core's
+ * prox_cyl_in_cyl: A lies in B iff both rims of A do), and for a nested pair the inner centre as the
+ * common point. */
+static void fill_overlap(const query *q, prox_distance_result *res, prox_vec3 origin)
+{
+    prox_vec3 x = q->common;
+    res->a_in_b = prox_cyl_in_cyl(&q->A, &q->B, 0.0);
+    res->b_in_a = prox_cyl_in_cyl(&q->B, &q->A, 0.0);
+    if (res->a_in_b) x = q->A.c;
+    else if (res->b_in_a) x = q->B.c;
+    res->distance = 0.0;
+    res->p1 = res->p2 = prox_v3_add(x, origin);
+    res->pair = PROX_PAIR_OVERLAP;
+    res->feature1 = res->feature2 = PROX_FEAT_INSIDE;
+    res->intersect = 1;
+    res->certificate_gap = 0.0;
 }
 
 /* Fills the result of a disjoint pair from the best candidate. */
@@ -902,222 +714,48 @@ static void fill_disjoint(const query *q, prox_distance_result *res, prox_vec3 o
     res->point_set = is_point_set(q);
 }
 
-/* Where the rim centres of one cylinder (`in`, axis i) lie with respect to the other's (`out`) axis
- * o: axial coordinates from out's base times |o| (c.o), and squared cross products |c x o|^2
- * (squared distances from the axis times |o|^2). */
-typedef struct rim_pos {
-    double t[2], x2[2];
-} rim_pos;
-
-/* The exact test of nested_raw for a rim between its bounds: circle_in_cyl on both rims, with out
- * prepared in a frame at its base (c0: in's base centre there).  Out of line: rarely needed, and its
- * prepared cylinder would weigh on the Case 1 path's frame. */
-static RCC_NOINLINE int nested_exact(const prox_rcc *in, const prox_rcc *out, prox_vec3 c0)
+/* Step 1: both cylinders (validated; squared heights ha2, hb2) prepared relative to A's centre, so
+ * that pairs far from the origin keep their relative precision (the subtraction is exact by
+ * Sterbenz), with the scale and the axes' cross product.  The rims come later (prepare_rims). */
+static void prepare(query *q, const prox_rcc *a, const prox_rcc *b, double ha2, double hb2, prox_vec3 origin)
 {
-    cyl oc;
-    cyl_init(&oc, out, prox_v3_norm(out->axis), out->base);
-    prox_vec3 wi = prox_v3_scale(in->axis, 1.0 / prox_v3_norm(in->axis));
-    return circle_in_cyl(c0, wi, in->radius, &oc, 0.0) &&
-           circle_in_cyl(prox_v3_add(c0, in->axis), wi, in->radius, &oc, 0.0);
-}
-
-/* The squared products of the axes that the nesting tests share: |i|^2, |o|^2, |i x o|^2,
- * (i.o)^2 and dn2 = (d.(i x o))^2, d the offset of the bases (|d.n| / |n| is the axes' distance). */
-typedef struct axes2 {
-    double ii, oo, nn, io2, dn2;
-} axes2;
-
-/* Nesting of `in` in `out` (Agarwal Fig. 2), exact: `in` lies in `out` iff both rims do (out convex).
- * A rim (radius r) fits axially iff its centre is r sin(theta) from each end (theta the angle of the
- * axes): with t = c.o, t >= 0 and |i|^2 t^2 >= r^2 |n|^2 at the base, the same for |o|^2 - t at the
- * top.  Radially, the rim's projection on out's cross-section is an ellipse of semi-axes r (along
- * the common normal e of the axes) and r |cos(theta)|, centred rho from the axis, and its farthest
- * distance D from the axis satisfies
- *     rho^2 + 2 r |ue| + r^2  <=  D^2  <=  rho^2 + 2 r sqrt(ue^2 + cos^2(theta) (rho^2 - ue^2)) + r^2,
- * ue the centre's offset from the axis along e, which is the distance L of the axes for both rims
- * and both cylinders (the lower bound is the ellipse's end on its major axis).  The rim is out when
- * the lower bound exceeds ro^2, in when the upper one does not; only in between (rare) does
- * circle_in_cyl find D.  With rho^2 = X / |o|^2 (X = |c x o|^2), L^2 = dn2 / |n|^2,
- * cos^2 = (i.o)^2 / (|i|^2 |o|^2) and |n|^2 = |i|^2 |o|^2 - (i.o)^2, and G = (ro^2 - r^2) |o|^2 - X
- * (the slack times |o|^2), the two tests clear their denominators to
- *     in:   G >= 0  and  4 r^2 (|o|^2 dn2 + (i.o)^2 X) <= |i|^2 G^2,
- *     out:  G < 0   or   4 r^2 |o|^4 dn2 > |n|^2 G^2:
- * no root and no division (products of up to six squared lengths: raw_window bounds them).
- * p: the rim centres (rim_pos); c0: the base centre of `in` relative to out's base (for the exact
- * test only). */
-static int nested_raw(const prox_rcc *in, const prox_rcc *out, const rim_pos *p, const axes2 *g,
-                      prox_vec3 c0)
-{
-    double ri2 = in->radius * in->radius, ro2 = out->radius * out->radius, h2 = ri2 * g->nn;
-    double in_l = 4.0 * ri2 * g->oo * g->dn2, out_l = in_l * g->oo, sl = (ro2 - ri2) * g->oo;
-    int yes = 1, no = 0;
-    for (int k = 0; k < 2; ++k) { /* each rim on its own: no min / max, which compile to branches */
-        double t = p->t[k], rest = g->oo - t, G = sl - p->x2[k], G2 = G * G;
-        int ax = (t >= 0.0) & (rest >= 0.0) & (g->ii * t * t >= h2) & (g->ii * rest * rest >= h2);
-        yes &= ax & (G >= 0.0) & (in_l + 4.0 * ri2 * g->io2 * p->x2[k] <= g->ii * G2);
-        no |= (!ax) | (G < 0.0) | (out_l > g->nn * G2);
-    }
-    /* one branch, on whether the bounds decide (almost always): a branch on yes itself would be a
-     * coin toss in a mixture of nested and crossing pairs */
-    int decided = yes | no;
-    RCC_OPAQUE(decided);
-    return decided ? yes : nested_exact(in, out, c0);
-}
-
-/* What case1_raw hands to case1_overlap: d = bB - bA, n = a x b, d x a, d x b, |a|^2, |b|^2,
- * |n|^2, (d x b).n and (d x a).n (the feet times |n|^2, Agarwal Sec. 3.1) and d.n. */
-typedef struct case1_geom {
-    prox_vec3 d, n, dxa, dxb;
-    double aa, bb, nn, sn, tn, dn;
-} case1_geom;
-
-/* Overlapping Case 1.  Nesting by nested_raw, from the cross products of the feet (A's rim centres
- * relative to B's base are -d and a - d, B's relative to A's are d and d + b); B in A only when
- * rB <= rA (a wider rim cannot fit).  The common point: the middle of the inner cylinder's axis
- * when nested, else the point dividing the common perpendicular of the axes (feet f1, f2, length
- * L <= rA + rB) in the ratio rA : rB, which is L rA / (rA + rB) <= rA from A's axis and
- * L rB / (rA + rB) <= rB from B's, so in both (no root).  No branch depends on whether the pair is
- * nested (a coin toss in a mixture, which cost 7-8 ns per pair in mispredictions): nested_raw
- * branches only on whether its bounds decide, and the point is picked by an index.  Out of line,
- * so that the disjoint path stays lean. */
-static RCC_NOINLINE prox_distance_result case1_overlap(const prox_rcc *A, const prox_rcc *B,
-                                                  const case1_geom *g)
-{
-    prox_vec3 a = A->axis, b = B->axis, d = g->d, n = g->n;
-    double ra = A->radius, rb = B->radius, ab = prox_v3_dot(a, b);
-    double da = prox_v3_dot(d, a), db = prox_v3_dot(d, b);
-    rim_pos pa = {{-db, ab - db}, {prox_v3_norm2(g->dxb), prox_v3_norm2(prox_v3_sub(n, g->dxb))}};
-    rim_pos pb = {{da, da + ab}, {prox_v3_norm2(g->dxa), prox_v3_norm2(prox_v3_sub(g->dxa, n))}};
-    axes2 ga = {g->aa, g->bb, g->nn, ab * ab, g->dn * g->dn};
-    axes2 gb = {g->bb, g->aa, g->nn, ab * ab, ga.dn2};
-    int ain = nested_raw(A, B, &pa, &ga, prox_v3_neg(d));
-    int bin = rb <= ra && nested_raw(B, A, &pb, &gb, d); /* rarely tried: a predictable branch */
-    double i2 = 1.0 / g->nn;
-    prox_vec3 mid = between_axes(prox_v3_mad(A->base, g->sn * i2, a),
-                                 prox_v3_mad(B->base, g->tn * i2, b), ra, rb);
-    /* chosen by an index, not a branch: nested or not is a coin toss in a mixture */
-    const prox_vec3 pts[3] = {mid, prox_v3_mad(B->base, 0.5, b), prox_v3_mad(A->base, 0.5, a)};
-    prox_vec3 x = pts[(bin & !ain) + 2 * ain];
-    return (prox_distance_result){.status = PROX_OK,
-                             .distance = 0.0,
-                             .p1 = x,
-                             .p2 = x,
-                             .pair = PROX_PAIR_OVERLAP,
-                             .feature1 = PROX_FEAT_INSIDE,
-                             .feature2 = PROX_FEAT_INSIDE,
-                             .agarwal = PROX_CASE_1,
-                             .intersect = 1,
-                             .a_in_b = ain,
-                             .b_in_a = bin};
-}
-
-/* Case 1 decided from the raw input before anything is prepared (Agarwal Sec. 2: both feet of the
- * common perpendicular on the finite axes).  With the unnormalised axes a, b and d = bB - bA:
- * n = a x b, the feet at the fractions s = ((d x b).n)/|n|^2 and t = ((d x a).n)/|n|^2 of the axes,
- * and the axes L = |d.n|/|n| apart.  Disjoint: the S-S pair along the unit common normal is the
- * minimum (the infinite solid cylinders are L - rA - rB apart and contain the finite ones,
- * docs/errata.md 8).  Overlapping: case1_overlap.
- * Takes pairs inside raw_window; hands to the general path (rcc_general) axes within 1e-3 rad of
- * parallel (ill-conditioned feet) and pairs that are not Case 1.  A disjoint pair costs one square
- * root and one division, an overlapping one a division and no root.  Every path returns its result
- * as a tail expression, so the result is built in the caller's return slot and never copied. */
-static RCC_NOINLINE prox_distance_result rcc_general(const prox_rcc *a, const prox_rcc *b, double ha2,
-                                                double hb2);
-static prox_distance_result case1_raw(const prox_rcc *A, const prox_rcc *B, double aa, double bb)
-{
-    prox_vec3 a = A->axis, b = B->axis, d = prox_v3_sub(B->base, A->base);
-    prox_vec3 n = prox_v3_cross(a, b), dxb = prox_v3_cross(d, b), dxa = prox_v3_cross(d, a);
-    double nn = prox_v3_norm2(n);
-    if (!(nn >= 1e-6 * aa * bb)) return rcc_general(A, B, aa, bb);
-    double sn = prox_v3_dot(dxb, n), tn = prox_v3_dot(dxa, n);
-    if (!(sn >= 0.0 && sn <= nn && tn >= 0.0 && tn <= nn)) return rcc_general(A, B, aa, bb);
-    /* Disjoint or not, decided from squares before the root: in a mixture of both the branch
-     * mispredicts often, and resolving it early wastes less (the axes are |d.n| / |n| apart). */
-    double dn = prox_v3_dot(d, n), ra = A->radius, rb = B->radius, rr = ra + rb;
-    if (dn * dn > rr * rr * nn) {
-        double inv = 1.0 / sqrt(nn), i2 = inv * inv, L = fabs(dn) * inv;
-        prox_vec3 v = prox_v3_scale(n, dn < 0.0 ? -inv : inv);
-        if (L > rr) { /* (as the two roundings agree) */
-            /* each point from its own foot: on its surface to rounding */
-            return (prox_distance_result){.status = PROX_OK,
-                                     .distance = L - rr,
-                                     .p1 = prox_v3_mad(prox_v3_mad(A->base, sn * i2, a), ra, v),
-                                     .p2 = prox_v3_mad(prox_v3_mad(B->base, tn * i2, b), -rb, v),
-                                     .pair = PROX_PAIR_SS,
-                                     .feature1 = PROX_FEAT_LATERAL,
-                                     .feature2 = PROX_FEAT_LATERAL,
-                                     .agarwal = PROX_CASE_1,
-                                     .hierarchy_exact = 1,
-                                     .certificate_gap = L - rr};
-        }
-    }
-    case1_geom g = {d, n, dxa, dxb, aa, bb, nn, sn, tn, dn};
-    return case1_overlap(A, B, &g);
-}
-
-/* Steps 1-6 for every pair that case1_raw does not answer (validated; squared heights ha2, hb2).
- * Kept out of line: its large query state would otherwise burden the Case 1 path's frame. */
-static prox_distance_result rcc_general(const prox_rcc *a, const prox_rcc *b, double ha2,
-                                                double hb2)
-{
-    prox_distance_result res = {0};
-
-    /* Step 1: both cylinders prepared relative to A's centre.  Only the flags are cleared: the
-     * cylinders are filled by cyl_init, the candidate is read only once have_best is set. */
-    prox_vec3 origin = prox_v3_mad(a->base, 0.5, a->axis);
-    query q;
-    cyl_init(&q.A, a, sqrt(ha2), origin);
-    cyl_init(&q.B, b, sqrt(hb2), origin);
-    double sc = prox_v3_norm(prox_v3_sub(q.B.c, q.A.c));
-    double dims[4] = {q.A.h, q.B.h, q.A.r, q.B.r};
-    for (int i = 0; i < 4; ++i) sc = dims[i] > sc ? dims[i] : sc;
-    q.nab = prox_v3_cross(q.A.w, q.B.w);
-    q.nn = prox_v3_norm2(q.nab);
-
-    q.have_best = q.overlap = q.tag = q.best_gap_done = 0;
-    q.scale = sc;
-    q.eps = 64.0 * DBL_EPSILON * q.scale;
-    q.lower = q.gap = -INFINITY;
-    q.parallel = q.nn <= 1e-30;
-
-    int ea, eb;
-    double s, t;
-    res.agarwal = classify(&q, &ea, &eb, &s, &t); /* step 2 */
-    if ((res.status = search(&q, a, b, res.agarwal, ea, eb, s, t)) != PROX_OK) return res;
-    if (q.overlap) {
-        containment(&q, &res);
-        fill_overlap(&q, &res, origin);
-    } else {
-        fill_disjoint(&q, &res, origin);
-    }
-    return res;
-}
-
-/* Whether a pair lies in the window of case1_raw, which also makes it valid (prox_rcc_validate):
- * base coordinates within PROX_MAX_COORD, squared axis lengths in [1e-40, 1e40] (finite and
- * nonzero), radii in [1e-20, 1e20] (positive) and the bases at most 1e20 apart, so that the
- * products of up to six squared lengths in nested_raw neither overflow nor lose precision to
- * underflow.  NaNs fail every comparison.  One pass without branches; *aa, *bb: the squared axis
- * lengths. */
-static int raw_window(const prox_rcc *A, const prox_rcc *B, double *aa, double *bb)
-{
-    const double M = PROX_MAX_COORD;
-    prox_vec3 p = A->base, q = B->base;
-    double a2 = prox_v3_norm2(A->axis), b2 = prox_v3_norm2(B->axis), ra = A->radius, rb = B->radius;
-    int ok = (fabs(p.x) <= M) & (fabs(p.y) <= M) & (fabs(p.z) <= M) & (fabs(q.x) <= M) &
-             (fabs(q.y) <= M) & (fabs(q.z) <= M) & (a2 >= 1e-40) & (a2 <= 1e40) & (b2 >= 1e-40) &
-             (b2 <= 1e40) & (ra >= 1e-20) & (ra <= 1e20) & (rb >= 1e-20) & (rb <= 1e20) &
-             (prox_v3_norm2(prox_v3_sub(q, p)) <= 1e40);
-    *aa = a2, *bb = b2;
-    return ok;
+    q->A = prox_cyl_make_h(a, sqrt(ha2), origin);
+    q->B = prox_cyl_make_h(b, sqrt(hb2), origin);
+    const double dims[5] = {prox_v3_dist(q->A.c, q->B.c), q->A.h, q->B.h, q->A.r, q->B.r};
+    q->scale = dims[0]; /* the pair's scale S (tests/data/README.md) */
+    for (int i = 1; i < 5; ++i) q->scale = dims[i] > q->scale ? dims[i] : q->scale;
+    q->eps = PROX_TOL_CERT * q->scale;
+    q->nab = prox_v3_cross(q->A.w, q->B.w);
+    q->nn = prox_v3_norm2(q->nab);
+    q->parallel = q->nn <= PROX_TOL_NO_FEET * PROX_TOL_NO_FEET;
+    q->have_best = q->overlap = q->tag = q->best_gap_done = 0;
+    q->lower = q->gap = -INFINITY;
 }
 
 PROX_API prox_distance_result prox_rcc_distance(const prox_rcc *a, const prox_rcc *b)
 {
+    prox_distance_result res = {0};
     double ha2, hb2;
-    if (a && b && raw_window(a, b, &ha2, &hb2)) return case1_raw(a, b, ha2, hb2);
-    prox_status st = prox_rcc_validate_h2(a, &ha2);
-    if (st == PROX_OK) st = prox_rcc_validate_h2(b, &hb2);
-    if (st != PROX_OK) return (prox_distance_result){.status = st};
-    return rcc_general(a, b, ha2, hb2); /* valid, outside the window */
+    res.status = prox_rcc_validate_h2(a, &ha2);
+    if (res.status == PROX_OK) res.status = prox_rcc_validate_h2(b, &hb2);
+    if (res.status != PROX_OK) return res;
+
+    prox_vec3 origin = prox_v3_mad(a->base, 0.5, a->axis);
+    query q;
+    prepare(&q, a, b, ha2, hb2, origin);
+    int ea, eb;
+    double s, t;
+    res.agarwal = classify(&q, &ea, &eb, &s, &t); /* step 2 */
+    if (!search(&q, res.agarwal, ea, eb, s, t)) {
+        /* Nothing certified (near-touching or near-parallel contacts): the closed-form method, which
+         * enumerates every stationary pair, answers; `method` tells the caller so. */
+        res = prox_rcc_closed_form(a, b);
+        res.method = PROX_METHOD_CLOSED_FORM;
+        return res;
+    }
+    res.method = PROX_METHOD_FAST;
+    res.certified = 1;
+    if (q.overlap) fill_overlap(&q, &res, origin);
+    else fill_disjoint(&q, &res, origin);
+    return res;
 }

@@ -14,8 +14,6 @@
  * ignored (not validated). */
 #include "distance/prim_common.h"
 
-#define PAR_TOL 1e-12
-
 /* Validates the segment and the (infinite) surface; returns the unit axis in *w. */
 static prox_status check_input(const prox_segment *a, const prox_cylsurf *s, prox_vec3 *w)
 {
@@ -34,7 +32,7 @@ static double crossing_param(prox_vec3 g, prox_vec3 g1, double t0, double rho0, 
     double tau[2] = {q / A, C / q}, best = 2.0;
     for (int i = 0; i < 2; ++i) {
         double t = t0 + tau[i];
-        if (!(t >= -1e-12 && t <= 1.0 + 1e-12)) continue;
+        if (!(t >= -PROX_TOL_PARAM && t <= 1.0 + PROX_TOL_PARAM)) continue; /* endpoint up to rounding */
         t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
         if (t < best) best = t;
     }
@@ -84,41 +82,8 @@ PROX_API prox_prim_result prox_segment_cylsurf_inf(const prox_segment *a, const 
     int on_axis;
     surface_point(&f, res.p1, &res, &on_axis);
     double len = prox_v3_norm(d);
-    res.set = on_axis || (len > 0.0 && sqrt(A) <= PAR_TOL * len);
+    res.set = on_axis || (len > 0.0 && sqrt(A) <= PROX_TOL_PARALLEL * len);
     res.distance = dist;
     res.status = PROX_OK;
     return res;
-}
-
-int prox_segment_clip_solid_cyl(prox_vec3 p, prox_vec3 q, prox_vec3 base, prox_vec3 w, double h, double r, double tol,
-                                double *s0, double *s1)
-{
-    prox_vec3 d = prox_v3_sub(q, p), o = prox_v3_sub(p, base);
-    double t0 = prox_v3_dot(o, w), dt = prox_v3_dot(d, w), lo = 0.0, hi = 1.0;
-    if (dt != 0.0) { /* the slab -tol <= t <= h + tol */
-        double a = (-tol - t0) / dt, b = (h + tol - t0) / dt;
-        lo = fmax(lo, fmin(a, b));
-        hi = fmin(hi, fmax(a, b));
-    } else if (t0 < -tol || t0 > h + tol) {
-        return 0;
-    }
-    if (!(lo <= hi)) return 0;
-    /* |radial(s)|^2 = dmin^2 + A (s - s*)^2 around the closest approach s*, dmin read off the radial
-     * vector at s* itself (the discriminant erred by 1e-5 relative at 800 x 0.003: a false contact at
-     * a 2e-8 gap in test_box_rcc) */
-    prox_vec3 ro = prox_v3_mad(o, -t0, w), rd = prox_v3_mad(d, -dt, w);
-    double A = prox_v3_norm2(rd), R = r + tol;
-    if (A > 0.0) {
-        double sstar = -prox_v3_dot(ro, rd) / A, dmin = prox_v3_norm(prox_v3_mad(ro, sstar, rd));
-        if (dmin > R) return 0;
-        double half = sqrt((R - dmin) * (R + dmin) / A);
-        lo = fmax(lo, sstar - half);
-        hi = fmin(hi, sstar + half);
-    } else if (prox_v3_norm(ro) > R) {
-        return 0;
-    }
-    if (!(lo <= hi)) return 0;
-    *s0 = lo;
-    *s1 = hi;
-    return 1;
 }

@@ -6,17 +6,15 @@
  * - the interior point is solved with cross products, t1 = ((a2-a1) x d2).n / |n|^2 and
  *   t2 = ((a2-a1) x d1).n / |n|^2 with n = d1 x d2, instead of the normal equations whose determinant
  *   |d1|^2 |d2|^2 - (d1.d2)^2 cancels catastrophically for near-parallel segments;
- * - it is used only when |n| > PAR_TOL |d1| |d2| and both parameters fall in [0, 1]; the four
+ * - it is used only when |n| > PROX_TOL_PARALLEL |d1| |d2| and both parameters fall in [0, 1]; the four
  *   endpoint-to-segment candidates (point_segment.c) are always evaluated and the smallest distance
  *   wins, so an ill-conditioned interior point can only be replaced by an equally good boundary pair;
  * - zero-length segments have d = 0, hence n = 0: only endpoint candidates remain.
- * set = 1 when the segments are parallel (|n| <= PAR_TOL |d1||d2|), both have positive length and their
+ * set = 1 when the segments are parallel (|n| <= PROX_TOL_PARALLEL |d1||d2|), both have positive length and their
  * projections on the common direction overlap in an interval of positive length. */
 #include "distance/prim_common.h"
 
 /* Sine of the angle below which two segments count as parallel. */
-#define PAR_TOL 1e-12
-
 /* Replaces the best pair when (t1, t2) is closer. */
 static void consider(prox_prim_result *best, const prox_segment *s1, double t1, const prox_segment *s2, double t2)
 {
@@ -37,7 +35,7 @@ static void interior_candidate(prox_prim_result *best, const prox_segment *s1, c
     prox_vec3 d1 = prox_v3_sub(s1->b, s1->a), d2 = prox_v3_sub(s2->b, s2->a);
     prox_vec3 n = prox_v3_cross(d1, d2);
     double nn = prox_v3_norm(n);
-    if (!(nn > PAR_TOL * prox_v3_norm(d1) * prox_v3_norm(d2))) return;
+    if (!(nn > PROX_TOL_PARALLEL * prox_v3_norm(d1) * prox_v3_norm(d2))) return;
     prox_vec3 r = prox_v3_sub(s2->a, s1->a);
     double t1 = prox_v3_dot(prox_v3_cross(r, d2), n) / (nn * nn);
     double t2 = prox_v3_dot(prox_v3_cross(r, d1), n) / (nn * nn);
@@ -50,7 +48,7 @@ static int parallel_overlap(const prox_segment *s1, const prox_segment *s2)
     prox_vec3 d1 = prox_v3_sub(s1->b, s1->a), d2 = prox_v3_sub(s2->b, s2->a);
     double l1 = prox_v3_norm(d1), l2 = prox_v3_norm(d2);
     if (!(l1 > 0.0) || !(l2 > 0.0)) return 0;
-    if (prox_v3_norm(prox_v3_cross(d1, d2)) > PAR_TOL * l1 * l2) return 0;
+    if (prox_v3_norm(prox_v3_cross(d1, d2)) > PROX_TOL_PARALLEL * l1 * l2) return 0;
     double ua = prox_v3_dot(prox_v3_sub(s2->a, s1->a), d1) / (l1 * l1);
     double ub = prox_v3_dot(prox_v3_sub(s2->b, s1->a), d1) / (l1 * l1);
     double lo = fmax(fmin(ua, ub), 0.0), hi = fmin(fmax(ua, ub), 1.0);

@@ -1,5 +1,5 @@
 /* Penetration depth of two overlapping solid cylinders by enumeration of the strata of the depth
- * function (issue 4, Sec. 2; derivation in docs/algorithms/sat.md, "Fast depth by strata").
+ * function (derivation in docs/algorithms/sat.md, "Fast depth by strata").
  *
  * phi(D) = rA|P_A D| + hA|D.WA| + rB|P_B D| + hB|D.WB| - D.Delta (Eberly, "Intersection of
  * Cylinders", Eqs. (4) and (6), with the sign of D.Delta kept), depth = min_{|D|=1} phi(D).
@@ -20,12 +20,13 @@
 #include "sup_engine.h"
 
 #include "core/circle.h"
+#include "core/tol.h"
 
 #include <float.h>
 
 /* Best direction and value so far. */
 typedef struct dp_state {
-    const sup_body *a, *b;
+    const prox_body *a, *b;
     prox_vec3 delta;
     double best;
     prox_vec3 best_d;
@@ -33,7 +34,7 @@ typedef struct dp_state {
 
 static double dp_phi(const dp_state *s, prox_vec3 d)
 {
-    return sup_hc(s->a, d) + sup_hc(s->b, d) - prox_v3_dot(d, s->delta);
+    return prox_body_hc(s->a, d) + prox_body_hc(s->b, d) - prox_v3_dot(d, s->delta);
 }
 
 /* Evaluates +-v / |v| (v need not be unit); ignores v = 0. */
@@ -48,10 +49,13 @@ static void dp_consider_pm(dp_state *s, prox_vec3 v)
     }
 }
 
-/* Rim circle of cylinder c at end e (+1 top, -1 bottom). */
-static prox_fcircle dp_rim(const sup_body *c, double e)
+/* Rim circle of cylinder c at end e (+1 top, -1 bottom), in absolute coordinates: the core's rim of
+ * the centred cylinder, moved to the centre. */
+static prox_fcircle dp_rim(const prox_body *c, int e)
 {
-    return prox_fcircle_make(prox_v3_mad(c->c, e * c->hh, c->w), c->w, c->r);
+    prox_fcircle f = prox_cyl_rim(&c->cyl, e > 0);
+    f.c = prox_v3_add(f.c, c->c);
+    return f;
 }
 
 /* Tangent (length r) of circle c at its point p. */
@@ -64,34 +68,38 @@ static prox_vec3 dp_tangent(const prox_fcircle *c, prox_vec3 p)
  * circle c: phi = |p2 - p1| with p1 = q's partner on lat's support segment (radius r from the axis,
  * |axial offset| <= hh). The rim projects off the axis onto an ellipse centred at the projected
  * centre with semi-axes <= r_c, and along the axis onto an interval of half length r_c |w x n_c|. */
-static double dp_ridge_lb(const prox_fcircle *c, const sup_body *lat)
+static double dp_ridge_lb(const prox_fcircle *c, const prox_body *lat)
 {
+    const prox_cyl *k = &lat->cyl;
     prox_vec3 d = prox_v3_sub(c->c, lat->c);
-    double ax = prox_v3_dot(d, lat->w), rho = prox_v3_norm(prox_v3_reject(d, lat->w));
-    double lb = fmax(rho - c->r - lat->r, lat->r - rho - c->r);
-    lb = fmax(lb, fabs(ax) - c->r * prox_v3_norm(prox_v3_cross(lat->w, c->n)) - lat->hh);
+    double ax = prox_v3_dot(d, k->w), rho = prox_v3_norm(prox_v3_reject(d, k->w));
+    double lb = fmax(rho - c->r - k->r, k->r - rho - c->r);
+    lb = fmax(lb, fabs(ax) - c->r * prox_v3_norm(prox_v3_cross(k->w, c->n)) - k->hh);
     return fmax(lb, 0.0);
 }
 
 /* Ridge D.w = 0 of cylinder `lat` (its lateral line) against the rims of `rim`: every stationary
  * point q of dist^2(rim, axis of lat) gives D = +-(q - c_lat) projected off w. 0 when degenerate. */
-static int dp_ridge(dp_state *s, const sup_body *lat, const sup_body *rim, double tol)
+static int dp_ridge(dp_state *s, const prox_body *lat, const prox_body *rim, double tol)
 {
+    prox_vec3 w = lat->cyl.w;
     for (int e = -1; e <= 1; e += 2) {
         prox_fcircle c = dp_rim(rim, e);
         if (dp_ridge_lb(&c, lat) > s->best + tol) continue;
         double th[4];
         int cnt = 0;
-        if (prox_circle_line_stationary(&c, lat->c, lat->w, th, &cnt)) { /* rim coaxial with lat */
-            dp_consider_pm(s, prox_v3_any_perp(lat->w));
+        int rc = prox_circle_line_stationary(&c, lat->c, w, th, &cnt);
+        if (rc < 0) return 0; /* the quartic could not be rooted: the global search decides */
+        if (rc == 1) { /* rim coaxial with lat */
+            dp_consider_pm(s, prox_v3_any_perp(w));
             continue;
         }
         for (int i = 0; i < cnt; ++i) {
-            prox_vec3 v = prox_v3_reject(prox_v3_sub(prox_fcircle_point(&c, th[i]), lat->c), lat->w);
-            v = prox_v3_reject(v, lat->w); /* second pass: v may be short */
-            if (!(prox_v3_norm2(v) > 1e-24 * lat->size * lat->size)) return 0; /* rim point on the axis */
+            prox_vec3 v = prox_v3_reject(prox_v3_sub(prox_fcircle_point(&c, th[i]), lat->c), w);
+            v = prox_v3_reject(v, w); /* second pass: v may be short */
+            if (!(prox_v3_norm2(v) > PROX_TOL_RADIAL * PROX_TOL_RADIAL * lat->size * lat->size)) return 0; /* rim point on the axis */
             dp_consider_pm(s, v);
-            dp_consider_pm(s, prox_v3_cross(lat->w, dp_tangent(&c, prox_fcircle_point(&c, th[i]))));
+            dp_consider_pm(s, prox_v3_cross(w, dp_tangent(&c, prox_fcircle_point(&c, th[i]))));
         }
     }
     return 1;
@@ -127,14 +135,23 @@ static double dp_circle_lb(const prox_fcircle *a, const prox_fcircle *b, double 
     return fmax(lb, 0.0);
 }
 
+/* The core's circle-circle stationary angles (Agarwal Sec. 3.5, degree 8): 0 solved, 1 degenerate
+ * (coaxial: a set of pairs), a negative prox_status when the root finder failed. */
+static int dp_cc_stationary(const prox_fcircle *a, const prox_fcircle *b, double th[8], int *cnt)
+{
+    return prox_circle_circle_stationary(a, b, PROX_ROOTS_CHAIN, th, cnt);
+}
+
 /* Critical pairs of one circle pair where the point of `b` is the closest of b to the point of `a`;
  * each gives D = +-(p_a - p_b), and D = +-(t_a x t_b) (D is normal to both rims' tangents: exact
- * also when the pair nearly touches and p_a - p_b is rounding). 0 on failure or degeneracy. */
+ * also when the pair nearly touches and p_a - p_b is rounding). 1 solved, 0 degenerate (the caller
+ * falls back to the global search), a negative prox_status when the solver failed. */
 static int dp_cells_closest(dp_state *s, const prox_fcircle *a, const prox_fcircle *b)
 {
     double th[8];
     int cnt = 0;
-    int rc = prox_circle_circle_stationary(a, b, th, &cnt);
+    int rc = dp_cc_stationary(a, b, th, &cnt);
+    if (rc < 0) return rc;
     if (rc != 0) return 0;
     for (int i = 0; i < cnt; ++i) {
         int deg = 0;
@@ -146,25 +163,25 @@ static int dp_cells_closest(dp_state *s, const prox_fcircle *a, const prox_fcirc
     return 1;
 }
 
-int sup_rcc_depth_enum(const sup_body *a, const sup_body *b, prox_signed_result *res)
+int sup_rcc_depth_enum(const prox_body *a, const prox_body *b, prox_signed_result *res)
 {
     dp_state s = {.a = a, .b = b, .delta = prox_v3_sub(b->c, a->c), .best = INFINITY};
-    s.best_d = a->w;
+    s.best_d = a->cyl.w;
     double scale = fmax(prox_v3_norm(s.delta), fmax(a->size, b->size));
     int ok = 1;
     /* points */
-    dp_consider_pm(&s, a->w);
-    dp_consider_pm(&s, b->w);
-    dp_consider_pm(&s, prox_v3_cross(a->w, b->w));
+    dp_consider_pm(&s, a->cyl.w);
+    dp_consider_pm(&s, b->cyl.w);
+    dp_consider_pm(&s, prox_v3_cross(a->cyl.w, b->cyl.w));
     /* ridges */
-    ok = dp_ridge(&s, a, b, 1e-13 * scale) && ok;
-    ok = dp_ridge(&s, b, a, 1e-13 * scale) && ok;
+    ok = dp_ridge(&s, a, b, PROX_TOL_SEARCH * scale) && ok;
+    ok = dp_ridge(&s, b, a, PROX_TOL_SEARCH * scale) && ok;
     /* cells: rim of A at end ea against rim of B at end eb */
     for (int ea = -1; ok && ea <= 1; ea += 2)
         for (int eb = -1; ok && eb <= 1; eb += 2) {
             prox_fcircle ca = dp_rim(a, ea), cb = dp_rim(b, eb);
             double far_a, far_b, lb = dp_circle_lb(&ca, &cb, &far_a, &far_b);
-            double cut = s.best + 1e-13 * scale; /* a bound within rounding of the best cannot improve it */
+            double cut = s.best + PROX_TOL_SEARCH * scale; /* a bound within rounding of the best cannot improve it */
             if (lb > cut) continue;
             /* pairs with p2 closest on B's rim to p1: stationary points on A's rim (one degree-8
              * solve); with p1 closest on A's rim: on B's rim. The rest has p1 farthest (>= far_a)
@@ -172,6 +189,7 @@ int sup_rcc_depth_enum(const sup_body *a, const sup_body *b, prox_signed_result 
             if (far_a > cut) ok = dp_cells_closest(&s, &cb, &ca);
             else if (far_b > cut) ok = dp_cells_closest(&s, &ca, &cb);
             else ok = 0;
+            if (ok < 0) return ok; /* a circle solver failed: PROX_ENUMERIC for the caller */
         }
     res->status = PROX_OK;
     res->sd = -s.best;

@@ -1,81 +1,50 @@
-/* Separating-axis verdict for two solid cylinders.
+/* Intersection verdict for two solid cylinders: Eberly's separating-axis tests where they decide, then
+ * Minkowski portal refinement (MPR) with a certified bound for every other direction, and Eberly's
+ * bisection on the axis-perpendicular directions only as a last resort in the touching band.
  *
  * Source: D. Eberly, "Intersection of Cylinders" (2000, rev. 2017), Secs. 4-8:
  *   Eq. (6)  f(D) = r0|P0 D| + r1|P1 D| + (h0/2)|D.W0| + (h1/2)|D.W1| - |D.Delta|; D separates iff
- *            f(D) < 0 (Eberly allows = 0; here touching counts as intersecting);
- *   Sec. 5   the axis directions W0, W1, W0 x W1 and the parallel case;
- *   Sec. 6   directions perpendicular to an axis: F(t), Eqs. (8)-(9), convex on [0, 1]; bisection on
- *            F' with a certified lower bound (tangent lines at the bracket ends), errata fixed;
- *   Sec. 7   other directions. Instead of Eberly's octant triangles and an unspecified minimiser,
- *            the open hemisphere D.Delta > 0 is parameterised by its tangent plane at
- *            n = Delta/|Delta|: D = n + z, z in n^perp, G(z) = f(n + z) = h_K(n + z) - |Delta| with
- *            K = (A - C0) + (B - C1) (Minkowski sum of the centred cylinders), one convex function on
- *            the whole plane. G is minimised by cutting planes: every support point k of K gives
- *            G(z) >= k.(n + z) - |Delta|, and the minimum of the piecewise-linear model kept on a
- *            triangle ("portal") of support points whose projection along n surrounds the origin is
- *            t_low - |Delta|, t_low n the point of the portal on the line R n. The portal normal N
- *            is the next trial direction: G(N / N.n) = t_up - |Delta|, t_up = h_K(N) / N.n.
- *            t_low <= t* <= t_up bracket the exit t* of the line from K; stop when t_up < |Delta|
- *            (N separates), t_low > |Delta| (certified: no separating direction exists), or
- *            t_up - t_low <= 1e-13 x scale (touching within tolerance: reported as intersecting).
- *            This is Minkowski portal refinement of the ray from the centre of K, read as a
- *            certified minimisation of Eberly's G over the tangent plane. */
+ *            f(D) < 0 (Eberly allows = 0; here touching counts as intersecting).
+ * Order of the tests (prox_sat_cyl):
+ *   1. Sec. 5: the axis directions W0, W1, W0 x W1 and the parallel case (Eberly's tests as written).
+ *   2. Every other direction by MPR, not Eberly's Sec. 7 (octant triangles and an unspecified
+ *      minimiser): the open hemisphere D.Delta > 0 is parameterised by its tangent plane at
+ *      n = Delta/|Delta|: D = n + z, z in n^perp, G(z) = f(n + z) = h_K(n + z) - |Delta| with
+ *      K = (A - C0) + (B - C1) (Minkowski sum of the centred cylinders), one convex function on the
+ *      whole plane. Every support point k of K gives the cutting plane G(z) >= k.(n + z) - |Delta|;
+ *      on a triangle ("portal") of support points whose projection along n surrounds the origin the
+ *      model's minimum is t_low - |Delta|, t_low n the point of the portal on the line R n, and the
+ *      portal normal N is the next trial direction: G(N / N.n) = t_up - |Delta|, t_up = h_K(N) / N.n.
+ *      t_low <= t* <= t_up bracket the exit t* of the line from K; stop when t_up < |Delta| (N
+ *      separates), t_low > |Delta| (certified: no separating direction exists; t_low is taken
+ *      rounding-safe, portal_low), or t_up - t_low <= PROX_TOL_SEARCH x scale (touching within
+ *      tolerance). This is Minkowski portal refinement of the ray from the centre of K (Snethen's
+ *      XenoCollide), read as a certified minimisation of Eberly's G over the tangent plane. An
+ *      overlapping pair's final portal also yields a common point (portal_apart).
+ *   3. Only when MPR ends undecided within the tolerance: Sec. 6, directions perpendicular to an
+ *      axis, F(t) of Eqs. (8)-(9), convex on [0, 1]; bisection on F' with a certified lower bound
+ *      (tangent lines at the bracket ends), errata fixed. A lateral contact's separating direction
+ *      lies exactly on such a kink, where MPR converges slowly. */
 #include "prox/sat.h"
 
-#include "prox/distance.h"
-#include "sup_engine.h"
+#include "core/body.h"
+#include "core/cyl.h"
+#include "core/tol.h"
+#include "sat_internal.h"
 
 #include <float.h>
 
-#define SAT_REL_TOL 1e-13
+/* Iteration cap of the portal refinement: it converges linearly and the certified stop ends it in a
+ * few tens of steps; the cap only guards against a rounding cycle. */
 #define SAT_MAX_IT 100
 
-/* One cylinder in Eberly's notation. */
-typedef struct sat_cyl {
-    prox_vec3 c, w;
-    double r, h;
-} sat_cyl;
-
-/* Validation with a fast path (hypot is slow): finite data, r > 0 and |axis|^2 a normal number
- * settle it; anything else goes to prox_rcc_validate for the exact status. */
-/* The library's one validator (finite, positive, inside the supported range): a private fast path
- * here once let a radius of 2.8e-312 through (fuzz crash queries-sat-range-5d681c9b). */
-static prox_status fast_validate(const prox_rcc *x) { return prox_rcc_validate(x); }
-
-/* Cylinder in centred form (axis lengths of normal range: sqrt(|a|^2) is safe). */
-static sat_cyl sat_make(const prox_rcc *x)
-{
-    sat_cyl s;
-    double h2 = prox_v3_norm2(x->axis);
-    s.h = h2 >= DBL_MIN && h2 <= DBL_MAX ? sqrt(h2) : prox_v3_norm(x->axis);
-    s.w = prox_v3_scale(x->axis, 1.0 / s.h);
-    s.c = prox_v3_mad(x->base, 0.5, x->axis);
-    s.r = x->radius;
-    return s;
-}
-
-/* Second Gram-Schmidt pass: d - (d.w)w keeps an O(eps |d|) component along w, which is large
- * relative to a short result (d nearly along the axis) and would put the support point off the
- * cylinder by up to r eps |d| / |perp|. */
-static prox_vec3 reortho(prox_vec3 perp, prox_vec3 w) { return prox_v3_mad(perp, -prox_v3_dot(perp, w), w); }
-
-/* Centred support function of one cylinder, Eberly Eq. (4) without D.C. */
-static double hc(const sat_cyl *s, prox_vec3 d)
-{
-    double dw = prox_v3_dot(d, s->w);
-    return s->r * sqrt(prox_v3_norm2(prox_v3_mad(d, -dw, s->w))) + 0.5 * s->h * fabs(dw);
-}
-static prox_vec3 pc(const sat_cyl *s, prox_vec3 d)
-{
-    double dw = prox_v3_dot(d, s->w);
-    prox_vec3 p = prox_v3_scale(s->w, dw > 0.0 ? 0.5 * s->h : (dw < 0.0 ? -0.5 * s->h : 0.0));
-    prox_vec3 perp = reortho(prox_v3_mad(d, -dw, s->w), s->w);
-    double n = sqrt(prox_v3_norm2(perp));
-    return n > 0.0 ? prox_v3_mad(p, s->r / n, perp) : p;
-}
+/* Centred support function and support point of one cylinder (Eberly Eq. (4) without D.C): the core's
+ * prepared cylinder. */
+static double hc(const prox_cyl *s, prox_vec3 d) { return prox_cyl_hc(s, d); }
+static prox_vec3 pc(const prox_cyl *s, prox_vec3 d) { return prox_cyl_support_point_c(s, d); }
 
 /* Gap along the unit direction of d: -f(d)/|d|; > 0 separates. */
-static double gap(const sat_cyl *a, const sat_cyl *b, prox_vec3 delta, prox_vec3 d)
+static double gap(const prox_cyl *a, const prox_cyl *b, prox_vec3 delta, prox_vec3 d)
 {
     double n2 = prox_v3_norm2(d), n = n2 >= DBL_MIN && n2 <= DBL_MAX ? sqrt(n2) : prox_v3_norm(d);
     prox_vec3 u = prox_v3_scale(d, 1.0 / n);
@@ -143,7 +112,7 @@ static double perp_quarter(const perp_f *p, double tol)
 
 /* Eberly's SeparatedByCylinderPerpendiculars with the errata fixed: both quarter circles
  * (U0 -> V0 and -U0 -> V0) are examined; the first one's "no separation" does not end the test. */
-static int perp_test(const sat_cyl *c0, const sat_cyl *c1, prox_vec3 delta, double tol, prox_vec3 *dir)
+static int perp_test(const prox_cyl *c0, const prox_cyl *c1, prox_vec3 delta, double tol, prox_vec3 *dir)
 {
     double c1d = prox_v3_dot(c0->w, c1->w);
     prox_vec3 v0 = prox_v3_mad(c1->w, -c1d, c0->w);
@@ -167,11 +136,10 @@ static int perp_test(const sat_cyl *c0, const sat_cyl *c1, prox_vec3 delta, doub
 /* ---- Sec. 7: other directions, certified cutting planes on the tangent plane ------------------ */
 
 typedef struct sat_k {
-    const sat_cyl *a, *b;
+    const prox_cyl *a, *b;
     prox_vec3 n, u, v; /* n = Delta/|Delta|, (u, v) basis of the tangent plane */
 } sat_k;
 
-static prox_vec3 ksup(const sat_k *k, prox_vec3 d) { return prox_v3_add(pc(k->a, d), pc(k->b, d)); }
 static double kh(const sat_k *k, prox_vec3 d) { return hc(k->a, d) + hc(k->b, d); }
 /* 2D cross product of the tangent-plane projections of p and q. */
 static double cross2(const sat_k *k, prox_vec3 p, prox_vec3 q)
@@ -194,26 +162,67 @@ static prox_vec3 edge_dir(const sat_k *k, prox_vec3 p, prox_vec3 q)
     return prox_v3_add(prox_v3_scale(k->u, nx), prox_v3_scale(k->v, ny));
 }
 
-/* Phase 1: three support points of K whose projections along n surround the origin (2D GJK for
- * a point interior to the projection of K). Returns 0 on failure. */
-static int find_portal(const sat_k *k, prox_vec3 p[3])
+/* A vertex of the portal: the support point p of K in some direction and its part pa from A
+ * (p = pa + pb, pa a point of A - cA): the A-parts give the common point of an overlapping pair. */
+static void kvert(const sat_k *k, prox_vec3 d, prox_vec3 *p, prox_vec3 *pa)
 {
-    p[0] = ksup(k, k->n);
+    *pa = pc(k->a, d);
+    *p = prox_v3_add(*pa, pc(k->b, d));
+}
+
+/* Phase 1: three support points of K whose projections along n surround the origin (2D GJK for
+ * a point interior to the projection of K), with their A-parts. Returns 0 on failure. */
+static int find_portal(const sat_k *k, prox_vec3 p[3], prox_vec3 pa[3])
+{
+    kvert(k, k->n, &p[0], &pa[0]);
     prox_vec3 t = prox_v3_mad(p[0], -prox_v3_dot(p[0], k->n), k->n);
-    if (prox_v3_norm2(t) == 0.0) { p[1] = p[2] = p[0]; return 1; } /* on the line itself */
-    p[1] = ksup(k, prox_v3_neg(t));
+    if (prox_v3_norm2(t) == 0.0) { p[1] = p[2] = p[0]; pa[1] = pa[2] = pa[0]; return 1; } /* on the line itself */
+    kvert(k, prox_v3_neg(t), &p[1], &pa[1]);
     for (int it = 0; it < 64; ++it) {
         prox_vec3 d = edge_dir(k, p[0], p[1]);
-        if (prox_v3_norm2(d) == 0.0) { p[2] = p[1]; return 1; } /* origin on the projected edge */
-        p[2] = ksup(k, d);
+        if (prox_v3_norm2(d) == 0.0) { p[2] = p[1]; pa[2] = pa[1]; return 1; } /* origin on the projected edge */
+        kvert(k, d, &p[2], &pa[2]);
         if (contains0(k, p[0], p[1], p[2])) return 1;
         /* the origin is beyond edge (p0, p2) or beyond edge (p2, p1): keep that edge */
         prox_vec3 e = prox_v3_sub(p[2], p[0]);
         double so = cross2(k, e, prox_v3_neg(p[0])), s1 = cross2(k, e, prox_v3_sub(p[1], p[0]));
-        if (so * s1 < 0.0) p[1] = p[2];
-        else p[0] = p[2];
+        int j = so * s1 < 0.0 ? 1 : 0;
+        p[j] = p[2];
+        pa[j] = pa[2];
     }
     return 0;
+}
+
+/* The A-part of Delta from the final portal of an intersecting pair. The line R n meets the portal at
+ * t n = sum l_i p_i, l_i the barycentric coordinates of the origin in the projected triangle (ratios
+ * of the 2D orientations); with s = |Delta| / t <= 1 (certified), Delta = sum s l_i (pa_i + pb_i) splits
+ * into a' = s sum l_i pa_i in A - cA and b' in B - cB (convex sets containing 0), so that
+ * cA + a' = cB - b' lies in A and, B being centrally symmetric, in B. In the touching band (s slightly
+ * above 1) the point is off by |Delta| - t <= the search tolerance. 0 when the portal is degenerate. */
+static int portal_apart(const sat_k *k, const prox_vec3 p[3], const prox_vec3 pa[3], double L, prox_vec3 *apart)
+{
+    double l[3], sum = 0.0;
+    for (int i = 0; i < 3; ++i) sum += l[i] = cross2(k, p[(i + 1) % 3], p[(i + 2) % 3]);
+    if (!(fabs(sum) > 0.0)) {
+        /* collapsed portal: a vertex on the line itself */
+        for (int i = 0; i < 3; ++i)
+            if (prox_v3_norm2(prox_v3_mad(p[i], -prox_v3_dot(p[i], k->n), k->n)) == 0.0 && prox_v3_dot(p[i], k->n) > 0.0) {
+                *apart = prox_v3_scale(pa[i], fmin(1.0, L / prox_v3_dot(p[i], k->n)));
+                return 1;
+            }
+        return 0;
+    }
+    prox_vec3 x = {0, 0, 0}, y = {0, 0, 0};
+    for (int i = 0; i < 3; ++i) {
+        double li = l[i] / sum;
+        if (li < 0.0) li = 0.0; /* rounding of a vertex on the line */
+        x = prox_v3_mad(x, li, p[i]);
+        y = prox_v3_mad(y, li, pa[i]);
+    }
+    double t = prox_v3_dot(x, k->n);
+    if (!(t > 0.0)) return 0;
+    *apart = prox_v3_scale(y, fmin(1.0, L / t));
+    return 1;
 }
 
 /* Rounding-safe lower bound of t* from the portal (p0, p1, p2) with computed normal N, nn = N.n > 0.
@@ -243,51 +252,63 @@ static double portal_low(const sat_k *k, const prox_vec3 p[3], prox_vec3 N, doub
 }
 
 /* Certified minimisation of G; returns 1 separated (dir, value = gap), 0 intersecting (value = the
- * certified lower bound of G, > 0, or 0 when undecided within the tolerance). */
-static int other_dirs(const sat_cyl *a, const sat_cyl *b, prox_vec3 delta, double scale, prox_vec3 *dir, double *value)
+ * certified lower bound of G, > 0, or 0 when undecided within the tolerance). When intersecting and
+ * apart is not NULL, *apart receives the A-part of Delta (portal_apart) and *has_apart = 1. */
+static int other_dirs(const prox_cyl *a, const prox_cyl *b, prox_vec3 delta, double scale, prox_vec3 *dir, double *value,
+                      prox_vec3 *apart, int *has_apart)
 {
     double L = sqrt(prox_v3_norm2(delta));
     sat_k k = {a, b, prox_v3_scale(delta, 1.0 / L), {0, 0, 0}, {0, 0, 0}};
     k.u = prox_v3_any_perp(k.n);
     k.v = prox_v3_cross(k.n, k.u);
-    prox_vec3 p[3];
-    double tol = SAT_REL_TOL * scale, t_up = INFINITY, t_low = -INFINITY;
+    prox_vec3 p[3], pa[3];
+    double tol = PROX_TOL_SEARCH * scale, t_up = INFINITY, t_low = -INFINITY;
+    if (has_apart) *has_apart = 0;
     /* the pole itself: G(0) */
     t_up = kh(&k, k.n);
     if (t_up < L) { *dir = k.n; *value = L - t_up; return 1; }
-    if (!find_portal(&k, p)) { *value = 0.0; return 0; }
+    if (!find_portal(&k, p, pa)) { *value = 0.0; return 0; }
     for (int it = 0; it < SAT_MAX_IT; ++it) {
         prox_vec3 N = prox_v3_cross(prox_v3_sub(p[1], p[0]), prox_v3_sub(p[2], p[0]));
         double nn = prox_v3_dot(N, k.n);
         if (nn < 0.0) { N = prox_v3_neg(N); nn = -nn; }
         if (!(nn > 1e-300 * sqrt(prox_v3_norm2(N)))) N = k.n, nn = 1.0; /* degenerate portal: use the pole */
         else t_low = fmax(t_low, portal_low(&k, p, N, nn));
-        if (t_low > L) { *value = t_low - L; return 0; } /* certified: no separating direction */
+        if (t_low > L) { /* certified: no separating direction */
+            *value = t_low - L;
+            if (apart) *has_apart = portal_apart(&k, p, pa, L, apart);
+            return 0;
+        }
         double tu = kh(&k, N) / nn;
         if (tu < t_up) t_up = tu;
         if (tu < L) {
-            *dir = N;
-            *value = gap(a, b, delta, N);
-            return 1;
+            /* separated, unless the gap along N, computed the other way, is not positive: a
+             * touching pair within rounding (touching counts as intersecting) */
+            double g = gap(a, b, delta, N);
+            if (g > 0.0) {
+                *dir = N;
+                *value = g;
+                return 1;
+            }
         }
         if (t_up - t_low <= tol) break;
-        prox_vec3 q = ksup(&k, N);
-        if (contains0(&k, q, p[1], p[2])) p[0] = q;
-        else if (contains0(&k, p[0], q, p[2])) p[1] = q;
-        else if (contains0(&k, p[0], p[1], q)) p[2] = q;
-        else break;
+        prox_vec3 q, qa;
+        kvert(&k, N, &q, &qa);
+        int j = contains0(&k, q, p[1], p[2]) ? 0 : contains0(&k, p[0], q, p[2]) ? 1 : contains0(&k, p[0], p[1], q) ? 2 : -1;
+        if (j < 0) break;
+        p[j] = q;
+        pa[j] = qa;
     }
     *value = fmax(0.0, t_low - L);
+    if (apart) *has_apart = portal_apart(&k, p, pa, L, apart);
     return 0;
 }
 
-PROX_API prox_test_result prox_rcc_sat(const prox_rcc *a, const prox_rcc *b)
+prox_test_result prox_sat_cyl(const prox_cyl *pa, const prox_cyl *pb)
 {
     prox_test_result r = {0};
-    r.status = fast_validate(a);
-    if (r.status == PROX_OK) r.status = fast_validate(b);
-    if (r.status != PROX_OK) return r;
-    sat_cyl c0 = sat_make(a), c1 = sat_make(b);
+    prox_cyl c0 = *pa, c1 = *pb;
+    r.status = PROX_OK;
     prox_vec3 delta = prox_v3_sub(c1.c, c0.c);
     double g;
     r.intersect = 1;
@@ -312,7 +333,7 @@ PROX_API prox_test_result prox_rcc_sat(const prox_rcc *a, const prox_rcc *b)
     prox_vec3 d;
     double v;
     double scale = fmax(sqrt(prox_v3_norm2(delta)), fmax(fmax(c0.h, c1.h), fmax(c0.r, c1.r)));
-    int other = other_dirs(&c0, &c1, delta, scale, &d, &v);
+    int other = other_dirs(&c0, &c1, delta, scale, &d, &v, NULL, NULL);
     if (other) return separated(d, delta, v, PROX_SAT_OTHER);
     if (v == 0.0) {
         /* undecided within tolerance (touching): Sec. 6 on the kinks D.W0 = 0 and D.W1 = 0,
@@ -325,4 +346,33 @@ PROX_API prox_test_result prox_rcc_sat(const prox_rcc *a, const prox_rcc *b)
     r.value = -v;
     r.decided_by = PROX_SAT_CERTIFIED;
     return r;
+}
+
+PROX_API prox_test_result prox_rcc_sat(const prox_rcc *a, const prox_rcc *b)
+{
+    prox_test_result r = {0};
+    r.status = prox_rcc_validate(a); /* the library's one validator (finite, positive, in range) */
+    if (r.status == PROX_OK) r.status = prox_rcc_validate(b);
+    if (r.status != PROX_OK) return r;
+    /* both relative to A's base (a pair far from the origin keeps its relative precision), then at
+     * unit scale (exact: a power of two), where no product in the tests can overflow or underflow */
+    prox_cyl c0 = prox_cyl_make(a, a->base), c1 = prox_cyl_make(b, a->base);
+    double f = prox_unit_scale(fmax(prox_v3_dist(c0.c, c1.c), fmax(fmax(c0.h, c1.h), fmax(c0.r, c1.r))));
+    c0 = prox_cyl_scaled(&c0, f);
+    c1 = prox_cyl_scaled(&c1, f);
+    r = prox_sat_cyl(&c0, &c1);
+    r.value /= f;
+    return r;
+}
+
+int prox_sat_common_point(const prox_cyl *a, const prox_cyl *b, prox_vec3 *x)
+{
+    prox_vec3 delta = prox_v3_sub(b->c, a->c), d, apart;
+    if (prox_v3_norm2(delta) == 0.0) { *x = a->c; return 1; } /* same centre */
+    double v, scale = fmax(prox_v3_norm(delta), fmax(fmax(a->h, b->h), fmax(a->r, b->r)));
+    int has = 0;
+    if (other_dirs(a, b, delta, scale, &d, &v, &apart, &has)) return 0; /* separated */
+    if (!has) return 0;
+    *x = prox_v3_add(a->c, apart);
+    return 1;
 }

@@ -1,56 +1,86 @@
-/* Signed distance of two solid cylinders (issue 4, Sec. 2).
+/* Signed distance of two solid cylinders by the support method alone (both signs), and the
+ * penetration depth of an overlapping pair (sat_internal.h).
  *
- * Disjoint pairs: the closed-form distance of Agarwal et al. (prox_rcc_distance, certified by
- * duality) is the exact answer: sd = distance, p1, p2 its proximal points, normal (p2 - p1) / sd.
- * Overlapping pairs: penetration depth = min over unit D of h_A(D) + h_B(-D) (h from Eberly's
- * Eq. (4)), minimised by enumerating the stationary directions of each stratum (rcc_depth.c), or
- * by the global search of the support-function engine (sup_engine.c) when a stratum cannot be
- * settled; sd = -depth.
- * sup_rcc_signed_support is the support-function method alone for both signs (SAT direction as a
- * start): the independent second method of the cross-check. */
-#include "prox/sat.h"
+ * Overlapping pairs: depth = min over unit D of h_A(D) + h_B(-D) (h from Eberly's Eq. (4)), minimised
+ * by enumerating the stationary directions of each stratum (rcc_depth.c), or by the global search of
+ * the support-function engine (sup_engine.c) when a stratum cannot be settled; sd = -depth.
+ * Disjoint pairs: the SAT's separating direction starts the certified minimisation of the same
+ * function (quasi-convex there, so the local search is global); sd = distance. */
+#include "sat_internal.h"
 
-#include "prox/distance.h"
 #include "sup_engine.h"
 
-prox_signed_result sup_rcc_signed_support(const prox_rcc *a, const prox_rcc *b)
+/* Bodies of a validated pair, both relative to A's base (exact by Sterbenz for a pair far from the
+ * origin, which keeps its relative precision) and at unit scale (a power of two, exact): *o and *f
+ * receive that origin and scale. */
+static void pair_bodies(const prox_rcc *a, const prox_rcc *b, prox_body *ba, prox_body *bb, prox_vec3 *o, double *f)
 {
-    prox_signed_result r = {0};
-    /* the SAT validates both and gives a separating direction: the start of the local search */
-    prox_test_result s = prox_rcc_sat(a, b);
-    if (s.status != PROX_OK) { r.status = s.status; return r; }
-    prox_shape sa = prox_shape_from_rcc(*a), sb = prox_shape_from_rcc(*b);
-    sup_body ba = sup_body_make(&sa), bb = sup_body_make(&sb);
-    return sup_signed_distance(&ba, &bb, s.intersect ? NULL : &s.direction);
+    *o = a->base;
+    prox_rcc ra = *a, rb = *b;
+    ra.base = prox_v3(0, 0, 0);
+    rb.base = prox_v3_sub(b->base, a->base);
+    prox_shape sa = prox_shape_from_rcc(ra), sb = prox_shape_from_rcc(rb);
+    *ba = prox_body_make(&sa);
+    *bb = prox_body_make(&sb);
+    *f = prox_unit_scale(fmax(prox_v3_dist(ba->c, bb->c), fmax(fmax(ba->cyl.h, bb->cyl.h), fmax(ba->cyl.r, bb->cyl.r))));
+    *ba = prox_body_scaled(ba, *f);
+    *bb = prox_body_scaled(bb, *f);
 }
 
-PROX_API prox_signed_result prox_rcc_signed_distance(const prox_rcc *a, const prox_rcc *b)
+/* A result of the scaled, relative pair in the caller's coordinates. */
+static prox_signed_result absolute(prox_signed_result r, prox_vec3 o, double f)
+{
+    if (r.status != PROX_OK) return r;
+    r.sd /= f;
+    r.p1 = prox_v3_mad(o, 1.0 / f, r.p1);
+    r.p2 = prox_v3_mad(o, 1.0 / f, r.p2);
+    return r;
+}
+
+/* Depth of the bodies of an overlapping pair: the enumeration, else the global search. */
+static prox_signed_result depth_bodies(const prox_body *ba, const prox_body *bb)
 {
     prox_signed_result r = {0};
-    prox_distance_result d = prox_rcc_distance(a, b); /* validates both */
-    if (d.status != PROX_OK) { r.status = d.status; return r; }
-    if (!d.intersect && d.distance > 0.0) {
-        r.status = PROX_OK;
-        r.sd = d.distance;
-        r.p1 = d.p1;
-        r.p2 = d.p2;
-        /* (p2 - p1) / |p2 - p1| is the normal: it makes p2 - p1 = sd n hold to the points' rounding.
-         * Its direction carries that rounding, eps |p| / distance, so very near touching it is only a
-         * valid supporting direction to that accuracy. When the points coincide (a distance below
-         * their resolution) the SAT's separating direction is used. */
-        prox_vec3 e = prox_v3_sub(d.p2, d.p1);
-        double en = prox_v3_norm(e);
-        if (en > 0.0) {
-            r.normal = prox_v3_scale(e, 1.0 / en);
-            return r;
-        }
-        prox_test_result s = prox_rcc_sat(a, b);
-        r.normal = s.intersect ? prox_v3(0, 0, 1) : s.direction;
-        return r;
+    int rc = sup_rcc_depth_enum(ba, bb, &r);
+    if (rc < 0) { /* a circle solver failed */
+        prox_signed_result e = {0};
+        e.status = (prox_status)-rc;
+        return e;
     }
-    prox_shape sa = prox_shape_from_rcc(*a), sb = prox_shape_from_rcc(*b);
-    sup_body ba = sup_body_make(&sa), bb = sup_body_make(&sb);
-    /* overlapping: enumeration of the strata (rcc_depth.c); the global search when it cannot settle */
-    if (sup_rcc_depth_enum(&ba, &bb, &r)) return r;
-    return sup_signed_distance(&ba, &bb, NULL);
+    if (rc == 1) return r;
+    return sup_signed_distance(ba, bb, NULL);
+}
+
+static prox_status validate_pair(const prox_rcc *a, const prox_rcc *b)
+{
+    if (!a || !b) return PROX_EINVAL_ARG;
+    prox_status s = prox_rcc_validate(a);
+    return s == PROX_OK ? prox_rcc_validate(b) : s;
+}
+
+prox_signed_result prox_sat_rcc_depth(const prox_rcc *a, const prox_rcc *b)
+{
+    prox_signed_result r = {0};
+    r.status = validate_pair(a, b);
+    if (r.status != PROX_OK) return r;
+    prox_body ba, bb;
+    prox_vec3 o;
+    double f;
+    pair_bodies(a, b, &ba, &bb, &o, &f);
+    return absolute(depth_bodies(&ba, &bb), o, f);
+}
+
+prox_signed_result prox_sat_rcc_signed(const prox_rcc *a, const prox_rcc *b)
+{
+    prox_signed_result r = {0};
+    r.status = validate_pair(a, b);
+    if (r.status != PROX_OK) return r;
+    prox_body ba, bb;
+    prox_vec3 o;
+    double f;
+    pair_bodies(a, b, &ba, &bb, &o, &f);
+    prox_cyl c0 = prox_body_cyl(&ba), c1 = prox_body_cyl(&bb); /* the verdict on the same cylinders */
+    prox_test_result s = prox_sat_cyl(&c0, &c1);
+    if (s.intersect) return absolute(depth_bodies(&ba, &bb), o, f);
+    return absolute(sup_signed_distance(&ba, &bb, &s.direction), o, f);
 }

@@ -16,117 +16,42 @@
  *   2-dim: inside a cell: Riemannian Newton on the sphere with backtracking.
  * Disjoint pairs have a quasi-convex problem (sublevel sets of phi/|D| below 0 are convex cones),
  * so a local minimum is global; overlapping pairs are not (a small body deep in a big one has one
- * local minimum per face), hence the global sampling of all strata. */
+ * local minimum per face), hence the global sampling of all strata.
+ *
+ * The bodies and their support functions are the core's (core/body.h: prox_cyl, prox_bframe). For a
+ * cylinder pair the caller may pass as a hint the separating direction of the verdict (rcc_sat.c),
+ * which is Minkowski portal refinement with a certified bound after Eberly's axis tests, with Eberly's
+ * bisection only as a last resort; a separating direction found here (GJK, samples) needs no verdict.
+ * The witnesses of a disjoint answer are the exact closest pair of the two support sets along the
+ * final normal (sup_witnesses), over a few candidate normals (disjoint_witnesses). */
 #include "sup_engine.h"
 
-#include "prox/primitives.h"
+#include "core/tol.h"
 
 #include <float.h>
 
 #define SUP_TOPK 4
 #define SUP_RIDGE_SAMPLES 64
-#define SUP_FACE_TOL 1e-9 /* |sin| below which a near-face/near-line support set is treated as one */
 
-/* ---- single bodies ---------------------------------------------------------------------- */
-
-sup_body sup_body_make(const prox_shape *s)
-{
-    sup_body b = {0};
-    switch (s->kind) {
-    case PROX_SHAPE_RCC: {
-        const prox_rcc *c = &s->u.rcc;
-        double h = prox_v3_norm(c->axis);
-        b.kind = SUP_CYL;
-        b.w = prox_v3_scale(c->axis, 1.0 / h);
-        b.c = prox_v3_mad(c->base, 0.5, c->axis);
-        b.r = c->radius;
-        b.hh = 0.5 * h;
-        b.size = h > 2.0 * c->radius ? h : 2.0 * c->radius;
-        break;
-    }
-    case PROX_SHAPE_BOX:
-    case PROX_SHAPE_RPP: {
-        prox_box bx = s->kind == PROX_SHAPE_BOX ? s->u.box : prox_rpp_to_box(&s->u.rpp);
-        b.kind = SUP_BOX;
-        b.c = bx.corner;
-        for (int i = 0; i < 3; ++i) {
-            double l = prox_v3_norm(bx.edge[i]);
-            b.e[i] = prox_v3_scale(bx.edge[i], 1.0 / l);
-            b.ext[i] = 0.5 * l;
-            b.c = prox_v3_mad(b.c, 0.5, bx.edge[i]);
-            if (l > b.size) b.size = l;
-        }
-        break;
-    }
-    case PROX_SHAPE_SPH:
-        b.kind = SUP_SPH;
-        b.c = s->u.sph.center;
-        b.r = s->u.sph.radius;
-        b.size = 2.0 * b.r;
-        break;
-    }
-    return b;
-}
-
-double sup_hc(const sup_body *b, prox_vec3 d)
-{
-    switch (b->kind) {
-    case SUP_CYL: {
-        double dw = prox_v3_dot(d, b->w);
-        return b->r * sqrt(prox_v3_norm2(prox_v3_mad(d, -dw, b->w))) + b->hh * fabs(dw);
-    }
-    case SUP_BOX:
-        return b->ext[0] * fabs(prox_v3_dot(d, b->e[0])) + b->ext[1] * fabs(prox_v3_dot(d, b->e[1])) +
-               b->ext[2] * fabs(prox_v3_dot(d, b->e[2]));
-    default: return b->r * sqrt(prox_v3_norm2(d));
-    }
-}
-
-/* Second Gram-Schmidt pass: d - (d.w)w keeps an O(eps |d|) component along w, which is large
- * relative to a short result (d nearly along the axis) and would put the support point off the
- * cylinder by up to r eps |d| / |perp|. */
-static prox_vec3 reortho(prox_vec3 perp, prox_vec3 w) { return prox_v3_mad(perp, -prox_v3_dot(perp, w), w); }
+/* ---- single bodies (core/body.h) ---------------------------------------------------------- */
 
 /* d / |d| for directions of moderate length (no overflow possible here). */
 static prox_vec3 unit(prox_vec3 d) { return prox_v3_scale(d, 1.0 / sqrt(prox_v3_norm2(d))); }
 
 static double sgn(double x) { return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0); }
 
-prox_vec3 sup_pc(const sup_body *b, prox_vec3 d)
-{
-    switch (b->kind) {
-    case SUP_CYL: {
-        double dw = prox_v3_dot(d, b->w);
-        prox_vec3 p = prox_v3_scale(b->w, b->hh * sgn(dw));
-        prox_vec3 perp = reortho(prox_v3_mad(d, -dw, b->w), b->w);
-        double n = sqrt(prox_v3_norm2(perp));
-        return n > 0.0 ? prox_v3_mad(p, b->r / n, perp) : p;
-    }
-    case SUP_BOX: {
-        prox_vec3 p = prox_v3(0, 0, 0);
-        for (int i = 0; i < 3; ++i) p = prox_v3_mad(p, b->ext[i] * sgn(prox_v3_dot(d, b->e[i])), b->e[i]);
-        return p;
-    }
-    default: {
-        double n = sqrt(prox_v3_norm2(d));
-        return n > 0.0 ? prox_v3_scale(d, b->r / n) : d;
-    }
-    }
-}
-
 /* Hessian of hc at d applied to v (zero for a box; defined off the kinks). */
-static prox_vec3 sup_hess(const sup_body *b, prox_vec3 d, prox_vec3 v)
+static prox_vec3 sup_hess(const prox_body *b, prox_vec3 d, prox_vec3 v)
 {
-    if (b->kind == SUP_CYL) {
-        double dw = prox_v3_dot(d, b->w);
-        prox_vec3 perp = reortho(prox_v3_mad(d, -dw, b->w), b->w);
+    if (b->kind == PROX_BODY_CYL) {
+        prox_vec3 perp = prox_cyl_perp(&b->cyl, d);
         double n = sqrt(prox_v3_norm2(perp));
         if (!(n > 0.0)) return prox_v3(0, 0, 0);
         prox_vec3 p = prox_v3_scale(perp, 1.0 / n);
-        prox_vec3 x = prox_v3_mad(prox_v3_mad(v, -prox_v3_dot(v, b->w), b->w), -prox_v3_dot(v, p), p);
-        return prox_v3_scale(x, b->r / n);
+        prox_vec3 x = prox_v3_mad(prox_v3_mad(v, -prox_v3_dot(v, b->cyl.w), b->cyl.w), -prox_v3_dot(v, p), p);
+        return prox_v3_scale(x, b->cyl.r / n);
     }
-    if (b->kind == SUP_SPH) {
+    if (b->kind == PROX_BODY_SPH) {
         double n = sqrt(prox_v3_norm2(d));
         prox_vec3 u = prox_v3_scale(d, 1.0 / n);
         return prox_v3_scale(prox_v3_mad(v, -prox_v3_dot(v, u), u), b->r / n);
@@ -135,17 +60,17 @@ static prox_vec3 sup_hess(const sup_body *b, prox_vec3 d, prox_vec3 v)
 }
 
 /* Ridge normals and cone axes of a body. */
-static int sup_ridges(const sup_body *b, prox_vec3 out[3])
+static int sup_ridges(const prox_body *b, prox_vec3 out[3])
 {
-    if (b->kind == SUP_CYL) { out[0] = b->w; return 1; }
-    if (b->kind == SUP_BOX) { out[0] = b->e[0]; out[1] = b->e[1]; out[2] = b->e[2]; return 3; }
+    if (b->kind == PROX_BODY_CYL) { out[0] = b->cyl.w; return 1; }
+    if (b->kind == PROX_BODY_BOX) { out[0] = b->box.a[0]; out[1] = b->box.a[1]; out[2] = b->box.a[2]; return 3; }
     return 0;
 }
 
 /* ---- the pair search ---------------------------------------------------------------------- */
 
 typedef struct sup_search {
-    const sup_body *a, *b;
+    const prox_body *a, *b;
     prox_vec3 delta;
     double scale;                /* max(|Delta|, sizes) */
     double best_phi;
@@ -157,12 +82,12 @@ typedef struct sup_search {
 
 static double phi_eval(const sup_search *s, prox_vec3 d)
 {
-    return sup_hc(s->a, d) + sup_hc(s->b, d) - prox_v3_dot(d, s->delta);
+    return prox_body_hc(s->a, d) + prox_body_hc(s->b, d) - prox_v3_dot(d, s->delta);
 }
 /* Gradient of phi: support point of K minus Delta (a subgradient on the kinks). */
 static prox_vec3 phi_grad(const sup_search *s, prox_vec3 d)
 {
-    return prox_v3_sub(prox_v3_add(sup_pc(s->a, d), sup_pc(s->b, d)), s->delta);
+    return prox_v3_sub(prox_v3_add(prox_body_pc(s->a, d), prox_body_pc(s->b, d)), s->delta);
 }
 static prox_vec3 phi_hess(const sup_search *s, prox_vec3 d, prox_vec3 v)
 {
@@ -174,7 +99,7 @@ static void record(sup_search *s, prox_vec3 d, double f)
 {
     if (f < s->best_phi) { s->best_phi = f; s->best_d = d; }
     for (int i = 0; i < s->nk; ++i)
-        if (prox_v3_dot(d, s->kd[i]) > 1.0 - 1e-8) {
+        if (prox_v3_dot(d, s->kd[i]) > 1.0 - PROX_TOL_SAME_START) {
             if (f < s->kphi[i]) { s->kphi[i] = f; s->kd[i] = d; }
             return;
         }
@@ -208,15 +133,15 @@ static void search_points(sup_search *s)
     for (int i = 0; i < n; ++i)
         for (int j = i + 1; j < n; ++j) {
             prox_vec3 x = prox_v3_cross(r[i], r[j]);
-            if (prox_v3_norm(x) < 1e-12) continue; /* parallel ridges: the 1-dim search covers it */
+            if (prox_v3_norm(x) < PROX_TOL_PARALLEL) continue; /* parallel ridges: the 1-dim search covers it */
             consider(s, x);
             consider(s, prox_v3_neg(x));
         }
-    const sup_body *bs[2] = {s->a, s->b};
+    const prox_body *bs[2] = {s->a, s->b};
     for (int k = 0; k < 2; ++k)
-        if (bs[k]->kind == SUP_CYL) {
-            consider(s, bs[k]->w);
-            consider(s, prox_v3_neg(bs[k]->w));
+        if (bs[k]->kind == PROX_BODY_CYL) {
+            consider(s, bs[k]->cyl.w);
+            consider(s, prox_v3_neg(bs[k]->cyl.w));
         }
     if (prox_v3_norm2(s->delta) > 0.0) {
         prox_vec3 u = prox_v3_normalize(s->delta);
@@ -240,10 +165,10 @@ static int ridge_kinks(sup_search *s, prox_vec3 u, prox_vec3 v, double *lo, doub
     prox_vec3 r[6];
     int n = sup_ridges(s->a, r);
     n += sup_ridges(s->b, r + n);
-    const double dl = 1e-7, noise = 16.0 * DBL_EPSILON * s->scale; /* noise: rounding of phi */
+    const double dl = PROX_TOL_KINK_PROBE, noise = PROX_TOL_PHI_ROUND * s->scale; /* noise: rounding of phi */
     for (int i = 0; i < n; ++i) {
         double ru = prox_v3_dot(u, r[i]), rv = prox_v3_dot(v, r[i]);
-        if (fabs(ru) + fabs(rv) < 1e-12) continue; /* this ridge itself (or parallel to it) */
+        if (fabs(ru) + fabs(rv) < PROX_TOL_PARALLEL) continue; /* this ridge itself (or parallel to it) */
         double tk = atan2(-ru, rv);
         for (int k = 0; k < 3; ++k) {
             double t = tk + (k - 1) * PROX_PI;
@@ -277,10 +202,10 @@ static void ridge_refine(sup_search *s, prox_vec3 u, prox_vec3 v, double lo, dou
         double g1 = prox_v3_dot(phi_grad(s, d), dt);
         double g2 = prox_v3_dot(dt, phi_hess(s, d, dt)) - f;
         if (g1 > 0.0) hi = th; else if (g1 < 0.0) lo = th; else return;
-        if (g2 > 0.0 && 0.5 * g1 * g1 / g2 <= 1e-17 * s->scale) return; /* decrement: converged */
+        if (g2 > 0.0 && 0.5 * g1 * g1 / g2 <= PROX_TOL_DECREMENT * s->scale) return; /* decrement: converged */
         double tn = g2 > 0.0 ? th - g1 / g2 : 0.5 * (lo + hi);
         if (!(tn > lo && tn < hi)) tn = 0.5 * (lo + hi);
-        if (fabs(tn - th) <= 1e-15 * (1.0 + fabs(th)) || hi - lo <= 1e-14) return;
+        if (fabs(tn - th) <= PROX_TOL_ANGLE * (1.0 + fabs(th)) || hi - lo <= PROX_TOL_ANGLE) return;
         th = tn;
     }
 }
@@ -314,32 +239,32 @@ static void search_ridge(sup_search *s, prox_vec3 w)
 static prox_vec3 phi_grad_centre(const sup_search *s, prox_vec3 d)
 {
     prox_vec3 g = prox_v3_neg(s->delta);
-    const sup_body *bs[2] = {s->a, s->b};
+    const prox_body *bs[2] = {s->a, s->b};
     for (int k = 0; k < 2; ++k) {
-        const sup_body *b = bs[k];
-        if (b->kind == SUP_CYL) {
-            double dw = prox_v3_dot(d, b->w);
-            prox_vec3 perp = reortho(prox_v3_mad(d, -dw, b->w), b->w);
+        const prox_body *b = bs[k];
+        if (b->kind == PROX_BODY_CYL) {
+            double dw = prox_v3_dot(d, b->cyl.w);
+            prox_vec3 perp = prox_cyl_perp(&b->cyl, d);
             double n = sqrt(prox_v3_norm2(perp));
-            g = prox_v3_mad(g, b->hh * sgn(dw), b->w);
-            if (n > 1e-6) g = prox_v3_mad(g, b->r / n, perp);
-        } else g = prox_v3_add(g, sup_pc(b, d));
+            g = prox_v3_mad(g, b->cyl.hh * sgn(dw), b->cyl.w);
+            if (n > PROX_TOL_CONE_PERP) g = prox_v3_mad(g, b->cyl.r / n, perp);
+        } else g = prox_v3_add(g, prox_body_pc(b, d));
     }
     return g;
 }
 
-/* 1 when d is within 1e-5 rad of a ridge or a cone point of either body. */
+/* 1 when d is within PROX_TOL_KINK rad of a ridge or PROX_TOL_CONE of a cone point of either body. */
 static int near_kink(const sup_search *s, prox_vec3 d)
 {
-    const sup_body *bs[2] = {s->a, s->b};
+    const prox_body *bs[2] = {s->a, s->b};
     for (int k = 0; k < 2; ++k) {
-        const sup_body *b = bs[k];
-        if (b->kind == SUP_CYL) {
-            double dw = fabs(prox_v3_dot(d, b->w));
-            if (dw < 1e-5 || dw > 1.0 - 5e-11) return 1;
-        } else if (b->kind == SUP_BOX)
+        const prox_body *b = bs[k];
+        if (b->kind == PROX_BODY_CYL) {
+            double dw = fabs(prox_v3_dot(d, b->cyl.w));
+            if (dw < PROX_TOL_KINK || dw > 1.0 - PROX_TOL_CONE) return 1;
+        } else if (b->kind == PROX_BODY_BOX)
             for (int i = 0; i < 3; ++i)
-                if (fabs(prox_v3_dot(d, b->e[i])) < 1e-5) return 1;
+                if (fabs(prox_v3_dot(d, b->box.a[i])) < PROX_TOL_KINK) return 1;
     }
     return 0;
 }
@@ -376,7 +301,7 @@ static double newton_step(sup_search *s, prox_vec3 *dp, double *fp)
         x1 = -(c * g1 - b * g2) / det;
         x2 = -(a * g2 - b * g1) / det;
         /* Newton decrement below rounding of phi: converged (no line search needed). */
-        if (-0.5 * (g1 * x1 + g2 * x2) <= 1e-17 * s->scale) return 0.0;
+        if (-0.5 * (g1 * x1 + g2 * x2) <= PROX_TOL_DECREMENT * s->scale) return 0.0;
     } else { /* not locally convex: steepest descent, length scaled by |phi| */
         double sc = fabs(f) > 0.0 ? fabs(f) : 1.0;
         x1 = -g1 / sc;
@@ -403,7 +328,7 @@ static void cell_newton(sup_search *s, prox_vec3 d)
     int escapes = 0;
     for (int it = 0; it < 40; ++it) {
         double len = newton_step(s, &d, &f);
-        if (len < 1e-13) {
+        if (len < PROX_TOL_STEP) {
             if (!near_kink(s, d) || escapes++ >= 3 || !escape_kink(s, &d, &f)) break;
         }
     }
@@ -506,7 +431,7 @@ static int gjk_separate(sup_search *s)
 {
     prox_vec3 p[4] = {prox_v3_neg(s->delta)}, v = p[0]; /* the point of P at both centres */
     int n = 1, separated = 0;
-    double tol = 4.0 * DBL_EPSILON * s->scale, floor2 = 256.0 * tol * tol;
+    double tol = PROX_TOL_SNAP * s->scale, floor2 = 256.0 * tol * tol;
     for (int it = 0; it < 128; ++it) {
         double vv = prox_v3_norm2(v);
         if (!(vv > floor2)) return separated;
@@ -537,35 +462,39 @@ typedef struct sup_face {
 
 static double clampd(double x, double m) { return x < -m ? -m : (x > m ? m : x); }
 
-/* Support set of body b in unit direction d (absolute position), near-faces included. */
-static sup_face face_of(const sup_body *b, prox_vec3 d)
+/* Support set of body b in unit direction d (absolute position), near-faces within ftol included
+ * (|sin| of the angle between d and the face normal, or d and the side). */
+static sup_face face_of_tol(const prox_body *b, prox_vec3 d, double ftol)
 {
     sup_face f = {0};
-    if (b->kind == SUP_CYL) {
-        double dw = prox_v3_dot(d, b->w);
-        prox_vec3 perp = reortho(prox_v3_mad(d, -dw, b->w), b->w);
+    if (b->kind == PROX_BODY_CYL) {
+        double dw = prox_v3_dot(d, b->cyl.w);
+        prox_vec3 perp = prox_cyl_perp(&b->cyl, d);
         double pn = prox_v3_norm(perp);
-        if (pn <= SUP_FACE_TOL) {
-            f.dim = 2; f.disk = 1; f.n = b->w; f.rad = b->r;
-            f.c = prox_v3_mad(b->c, dw >= 0.0 ? b->hh : -b->hh, b->w);
-        } else if (fabs(dw) <= SUP_FACE_TOL) {
-            f.dim = 1; f.e0 = b->w; f.s0 = b->hh;
-            f.c = prox_v3_mad(b->c, b->r / pn, perp);
-        } else f.c = prox_v3_add(b->c, sup_pc(b, d));
+        if (pn <= ftol) {
+            f.dim = 2; f.disk = 1; f.n = b->cyl.w; f.rad = b->cyl.r;
+            f.c = prox_v3_mad(b->c, dw >= 0.0 ? b->cyl.hh : -b->cyl.hh, b->cyl.w);
+        } else if (fabs(dw) <= ftol) {
+            f.dim = 1; f.e0 = b->cyl.w; f.s0 = b->cyl.hh;
+            f.c = prox_v3_mad(b->c, b->cyl.r / pn, perp);
+        } else f.c = prox_v3_add(b->c, prox_body_pc(b, d));
         return f;
     }
     f.c = b->c;
-    if (b->kind == SUP_SPH) { f.c = prox_v3_mad(b->c, b->r, d); return f; }
+    if (b->kind == PROX_BODY_SPH) { f.c = prox_v3_mad(b->c, b->r, d); return f; }
     for (int i = 0; i < 3; ++i) {
-        double di = prox_v3_dot(d, b->e[i]);
-        if (fabs(di) <= SUP_FACE_TOL && f.dim < 2) {
-            if (f.dim == 0) { f.e0 = b->e[i]; f.s0 = b->ext[i]; }
-            else { f.e1 = b->e[i]; f.s1 = b->ext[i]; }
+        double di = prox_v3_dot(d, b->box.a[i]);
+        if (fabs(di) <= ftol && f.dim < 2) {
+            if (f.dim == 0) { f.e0 = b->box.a[i]; f.s0 = b->box.h[i]; }
+            else { f.e1 = b->box.a[i]; f.s1 = b->box.h[i]; }
             f.dim++;
-        } else f.c = prox_v3_mad(f.c, di >= 0.0 ? b->ext[i] : -b->ext[i], b->e[i]);
+        } else f.c = prox_v3_mad(f.c, di >= 0.0 ? b->box.h[i] : -b->box.h[i], b->box.a[i]);
     }
     return f;
 }
+
+/* The support set with near-faces within PROX_TOL_FACE (MCNP decks print directions to ~10 digits). */
+static sup_face face_of(const prox_body *b, prox_vec3 d) { return face_of_tol(b, d, PROX_TOL_FACE); }
 
 /* Nearest point of a support set to x. */
 static prox_vec3 face_proj(const sup_face *f, prox_vec3 x)
@@ -583,24 +512,217 @@ static prox_vec3 face_proj(const sup_face *f, prox_vec3 x)
     return p;
 }
 
-/* Witness points for the minimising direction n: p1 in the support set of A in n, p2 in that of B
- * in -n, with p2 - p1 as close to sd n as the sets allow (alternating projections). */
-void sup_witnesses(const sup_body *a, const sup_body *b, prox_vec3 n, double sd, prox_vec3 *p1, prox_vec3 *p2)
+/* ---- exact closest pair of two support sets, in the plane perpendicular to n -------------------- */
+
+/* A point of that plane (coordinates along u, v). */
+typedef struct v2 {
+    double x, y;
+} v2;
+
+static v2 v2_sub(v2 a, v2 b) { v2 r = {a.x - b.x, a.y - b.y}; return r; }
+static v2 v2_mad(v2 a, double s, v2 b) { v2 r = {a.x + s * b.x, a.y + s * b.y}; return r; }
+static double v2_dot(v2 a, v2 b) { return a.x * b.x + a.y * b.y; }
+static double v2_cross(v2 a, v2 b) { return a.x * b.y - a.y * b.x; }
+static double v2_norm(v2 a) { return prox_hypot2(a.x, a.y); }
+
+/* A support set seen along n: a convex polygon of nv vertices in cyclic order (1 a point, 2 a
+ * segment, 4 a rectangle) or a disk (centre q, radius R). */
+typedef struct set2 {
+    int nv, disk;
+    v2 v[4], q;
+    double R;
+} set2;
+
+/* The plane's frame: origin o, unit u, v perpendicular to n. */
+typedef struct frame2 {
+    prox_vec3 o, u, v;
+} frame2;
+
+static v2 to2(const frame2 *F, prox_vec3 x)
 {
+    prox_vec3 d = prox_v3_sub(x, F->o);
+    v2 r = {prox_v3_dot(d, F->u), prox_v3_dot(d, F->v)};
+    return r;
+}
+
+static set2 face_2d(const frame2 *F, const sup_face *f)
+{
+    set2 s = {0};
+    if (f->disk) {
+        s.disk = 1;
+        s.q = to2(F, f->c);
+        s.R = f->rad;
+        return s;
+    }
+    if (f->dim == 0) {
+        s.nv = 1;
+        s.v[0] = to2(F, f->c);
+    } else if (f->dim == 1) {
+        s.nv = 2;
+        s.v[0] = to2(F, prox_v3_mad(f->c, -f->s0, f->e0));
+        s.v[1] = to2(F, prox_v3_mad(f->c, f->s0, f->e0));
+    } else {
+        static const double sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
+        s.nv = 4;
+        for (int i = 0; i < 4; ++i)
+            s.v[i] = to2(F, prox_v3_mad(prox_v3_mad(f->c, sx[i] * f->s0, f->e0), sy[i] * f->s1, f->e1));
+    }
+    return s;
+}
+
+/* Closest point of the segment [a, b] to q. */
+static v2 seg2_closest(v2 a, v2 b, v2 q)
+{
+    v2 e = v2_sub(b, a);
+    double ee = v2_dot(e, e), t = ee > 0.0 ? v2_dot(v2_sub(q, a), e) / ee : 0.0;
+    return v2_mad(a, t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t), e);
+}
+
+/* Closest point of a polygon set to q (q itself when inside). */
+static v2 poly2_closest(const set2 *P, v2 q)
+{
+    if (P->nv == 1) return P->v[0];
+    if (P->nv == 2) return seg2_closest(P->v[0], P->v[1], q);
+    int pos = 1, neg = 1;
+    for (int i = 0; i < P->nv; ++i) {
+        double c = v2_cross(v2_sub(P->v[(i + 1) % P->nv], P->v[i]), v2_sub(q, P->v[i]));
+        pos &= c >= 0.0;
+        neg &= c <= 0.0;
+    }
+    if (pos || neg) return q;
+    v2 best = P->v[0];
+    double bd = INFINITY;
+    for (int i = 0; i < P->nv; ++i) {
+        v2 x = seg2_closest(P->v[i], P->v[(i + 1) % P->nv], q);
+        double d = v2_norm(v2_sub(x, q));
+        if (d < bd) bd = d, best = x;
+    }
+    return best;
+}
+
+/* Keeps (x, y) when closer than the best pair so far. */
+static void pair2_offer(v2 x, v2 y, v2 *bx, v2 *by, double *bd)
+{
+    double d = v2_norm(v2_sub(x, y));
+    if (d < *bd) *bd = d, *bx = x, *by = y;
+}
+
+/* Closest pair of two convex polygon sets: a pair of disjoint convex polygons has a closest pair with
+ * a vertex of one of them; overlapping ones have a vertex inside the other or two crossing edges. */
+static void poly2_pair(const set2 *P, const set2 *Q, v2 *x, v2 *y)
+{
+    double bd = INFINITY;
+    for (int i = 0; i < P->nv; ++i) pair2_offer(P->v[i], poly2_closest(Q, P->v[i]), x, y, &bd);
+    for (int j = 0; j < Q->nv; ++j) pair2_offer(poly2_closest(P, Q->v[j]), Q->v[j], x, y, &bd);
+    int ep = P->nv == 2 ? 1 : (P->nv == 4 ? 4 : 0), eq = Q->nv == 2 ? 1 : (Q->nv == 4 ? 4 : 0);
+    for (int i = 0; i < ep; ++i)
+        for (int j = 0; j < eq; ++j) {
+            v2 a = P->v[i], b = P->v[(i + 1) % P->nv], c = Q->v[j], d = Q->v[(j + 1) % Q->nv];
+            double d1 = v2_cross(v2_sub(b, a), v2_sub(c, a)), d2 = v2_cross(v2_sub(b, a), v2_sub(d, a));
+            double d3 = v2_cross(v2_sub(d, c), v2_sub(a, c)), d4 = v2_cross(v2_sub(d, c), v2_sub(b, c));
+            if (d1 * d2 < 0.0 && d3 * d4 < 0.0) { /* proper crossing */
+                v2 z = v2_mad(a, d3 / (d3 - d4), v2_sub(b, a));
+                pair2_offer(z, z, x, y, &bd);
+            }
+        }
+}
+
+/* Closest pair (x in S, y in T) of two support sets seen along n. The distance from a convex set to a
+ * disk is its distance to the centre less the radius, attained at the set's point closest to the
+ * centre. */
+static void set2_pair(const set2 *S, const set2 *T, v2 *x, v2 *y)
+{
+    if (!S->disk && !T->disk) { poly2_pair(S, T, x, y); return; }
+    if (S->disk && T->disk) {
+        v2 e = v2_sub(T->q, S->q);
+        double L = v2_norm(e);
+        if (!(L > 0.0)) { *x = *y = S->q; return; } /* concentric: the common centre */
+        /* along the centre line S covers [-R_S, R_S], T covers [L - R_T, L + R_T] */
+        double lo = fmax(-S->R, L - T->R), hi = fmin(S->R, L + T->R);
+        if (lo <= hi) { *x = *y = v2_mad(S->q, 0.5 * (lo + hi) / L, e); return; }
+        *x = v2_mad(S->q, S->R / L, e);
+        *y = v2_mad(T->q, -T->R / L, e);
+        return;
+    }
+    const set2 *P = S->disk ? T : S, *D = S->disk ? S : T;
+    v2 p = poly2_closest(P, D->q), dq = v2_sub(p, D->q), d;
+    double l = v2_norm(dq);
+    d = l > D->R ? v2_mad(D->q, D->R / l, dq) : p;
+    *x = S->disk ? d : p;
+    *y = S->disk ? p : d;
+}
+
+/* The point of support set f seen at X: lifted onto the set's plane and projected into the set. */
+static prox_vec3 lift2(const frame2 *F, const sup_face *f, v2 X)
+{
+    return face_proj(f, prox_v3_mad(prox_v3_mad(F->o, X.x, F->u), X.y, F->v));
+}
+
+/* Witness points. Disjoint pairs: the closest pair of the two support sets. The sets lie in planes
+ * perpendicular to n (a disk or a side line supports exactly on a kink, where the search snaps the
+ * direction), so the pair closest along n is the pair closest in 3D: solved exactly in the plane. A
+ * near-face (within PROX_TOL_FACE of a kink, not snapped) is tilted by less than that: it is tried as
+ * the face and as its extreme point (sets_pair); the pair is then polished by exact projections onto
+ * the solids (prox_body_closest), which never increase |p2 - p1| and keep p1 in A, p2 in B. Overlapping pairs: p2 - p1 as close to sd n as the sets allow
+ * (the closest pair of A's set and B's set moved by -sd n). */
+/* The closest pair of support sets fa (of a) and fb (of b) along n, polished; returns |p2 - p1|. */
+static double set_pair(const prox_body *a, const prox_body *b, const sup_face *fa, const sup_face *fb, prox_vec3 n,
+                       prox_vec3 *p1, prox_vec3 *p2)
+{
+    frame2 F = {fa->c, prox_v3_any_perp(n), {0, 0, 0}};
+    F.v = prox_v3_cross(n, F.u);
+    set2 sa = face_2d(&F, fa), sb = face_2d(&F, fb);
+    v2 X = {0, 0}, Y = {0, 0};
+    set2_pair(&sa, &sb, &X, &Y);
+    prox_vec3 x = lift2(&F, fa, X), y = lift2(&F, fb, Y);
+    double d = prox_v3_dist(x, y);
+    for (int it = 0; it < 8; ++it) { /* polish: alternating exact projections onto the solids */
+        prox_vec3 yn = prox_body_closest(b, x), xn = prox_body_closest(a, yn);
+        double dn = prox_v3_dist(xn, yn);
+        if (!(dn < d)) break;
+        x = xn, y = yn, d = dn;
+    }
+    *p1 = x;
+    *p2 = y;
+    return d;
+}
+
+/* The same over the readings of each support set: a near-face tilted by more than rounding
+ * (PROX_TOL_NOISE) but within PROX_TOL_FACE is tried both as the face and as its one extreme point.
+ * As a face its lift carries the tilt x radius (4e-11 on a disk facing a disk tilted by 5e-11: the
+ * middle of the overlap is not the lowest point of the tilted disk); as a point it is exact. */
+static double sets_pair(const prox_body *a, const prox_body *b, prox_vec3 n, prox_vec3 *p1, prox_vec3 *p2)
+{
+    sup_face fa[2] = {face_of(a, n), face_of_tol(a, n, PROX_TOL_NOISE)};
+    sup_face fb[2] = {face_of(b, prox_v3_neg(n)), face_of_tol(b, prox_v3_neg(n), PROX_TOL_NOISE)};
+    int na = fa[1].dim != fa[0].dim ? 2 : 1, nb = fb[1].dim != fb[0].dim ? 2 : 1;
+    double best = INFINITY;
+    for (int i = 0; i < na; ++i)
+        for (int j = 0; j < nb; ++j) {
+            prox_vec3 x, y;
+            double d = set_pair(a, b, &fa[i], &fb[j], n, &x, &y);
+            if (d < best) best = d, *p1 = x, *p2 = y;
+        }
+    return best;
+}
+
+void sup_witnesses(const prox_body *a, const prox_body *b, prox_vec3 n, double sd, prox_vec3 *p1, prox_vec3 *p2)
+{
+    if (sd > 0.0) {
+        sets_pair(a, b, n, p1, p2);
+        return;
+    }
     sup_face fa = face_of(a, n), fb = face_of(b, prox_v3_neg(n));
     if (fa.dim == 1 && fb.dim == 1) {
         /* two segments (two lateral lines): alternating projections converge like cos^2 of their
          * angle, far too slowly for nearly parallel axes; the closest points of A's segment and
          * B's segment moved by -sd n are the exact pair */
-        prox_segment sa = {prox_v3_mad(fa.c, -fa.s0, fa.e0), prox_v3_mad(fa.c, fa.s0, fa.e0)};
-        prox_vec3 cb = prox_v3_mad(fb.c, -sd, n);
-        prox_segment sb = {prox_v3_mad(cb, -fb.s0, fb.e0), prox_v3_mad(cb, fb.s0, fb.e0)};
-        prox_prim_result q = prox_segment_segment(&sa, &sb);
-        if (q.status == PROX_OK) {
-            *p1 = q.p1;
-            *p2 = prox_v3_mad(q.p2, sd, n);
-            return;
-        }
+        prox_vec3 cb = prox_v3_mad(fb.c, -sd, n), q1, q2;
+        prox_seg_seg(prox_v3_mad(fa.c, -fa.s0, fa.e0), prox_v3_mad(fa.c, fa.s0, fa.e0), prox_v3_mad(cb, -fb.s0, fb.e0),
+                     prox_v3_mad(cb, fb.s0, fb.e0), &q1, &q2);
+        *p1 = q1;
+        *p2 = prox_v3_mad(q2, sd, n);
+        return;
     }
     prox_vec3 x = fa.c, y = face_proj(&fb, prox_v3_mad(x, sd, n));
     if (fa.dim > 0 || fb.dim > 0)
@@ -609,14 +731,14 @@ void sup_witnesses(const sup_body *a, const sup_body *b, prox_vec3 n, double sd,
             prox_vec3 yn = face_proj(&fb, prox_v3_mad(xn, sd, n));
             double mv = prox_v3_dist(xn, x) + prox_v3_dist(yn, y);
             x = xn; y = yn;
-            if (mv <= 1e-17 * (prox_v3_maxabs(x) + prox_v3_maxabs(y) + fabs(sd))) break; /* at rounding */
+            if (mv <= PROX_TOL_DECREMENT * (prox_v3_maxabs(x) + prox_v3_maxabs(y) + fabs(sd))) break; /* at rounding */
         }
     *p1 = x;
     *p2 = y;
 }
 
-/* Snaps the best direction onto a kink it is within 1e-5 rad of (cone point +-W, ridge D.w = 0),
- * when phi there is no worse (up to rounding, 4 eps x scale): the nonsmooth search ends a few 1e-7 rad off a
+/* Snaps the best direction onto a kink it is within PROX_TOL_KINK of (cone point +-W, ridge D.w = 0),
+ * when phi there is no worse (up to rounding, PROX_TOL_SNAP x scale): the nonsmooth search ends a few 1e-7 rad off a
  * kink, where the support set of a cylinder jumps from a disk or a segment to one point and the
  * witnesses would be off by radius x angle. On the kink the support set is the whole face. */
 static void snap_to_kinks(sup_search *s)
@@ -628,24 +750,131 @@ static void snap_to_kinks(sup_search *s)
         for (int i = 0; i < n; ++i) {
             prox_vec3 d = s->best_d, c;
             double dw = prox_v3_dot(d, r[i]);
-            if (fabs(dw) < 1e-5 && dw != 0.0) c = prox_v3_mad(d, -dw, r[i]);
-            else if (fabs(dw) > 1.0 - 5e-11 && fabs(dw) != 1.0) c = dw > 0.0 ? r[i] : prox_v3_neg(r[i]);
+            if (fabs(dw) < PROX_TOL_KINK && dw != 0.0) c = prox_v3_mad(d, -dw, r[i]);
+            else if (fabs(dw) > 1.0 - PROX_TOL_CONE && fabs(dw) != 1.0) c = dw > 0.0 ? r[i] : prox_v3_neg(r[i]);
             else continue;
             c = unit(c);
             double f = phi_eval(s, c);
-            if (f <= s->best_phi + 4.0 * DBL_EPSILON * s->scale) { s->best_phi = f; s->best_d = c; }
+            if (f <= s->best_phi + PROX_TOL_SNAP * s->scale) { s->best_phi = f; s->best_d = c; }
         }
+}
+
+/* ---- directions for the witnesses ----------------------------------------------------------- */
+
+/* The search stops when phi no longer decreases beyond its rounding, which leaves the direction off
+ * by up to sqrt(rounding / curvature) ~ 1e-8 rad; phi is then right to 1e-17 S, but the support
+ * points move by radius x angle, and a near-touching pair's |p2 - p1| is off by (r angle)^2 / d.
+ * The witnesses need the direction itself: pure Newton steps on the tangential gradient, accepted
+ * while its norm decreases (quadratic convergence takes 1e-8 to rounding in one or two steps). */
+static double tgrad_norm(const sup_search *s, prox_vec3 d)
+{
+    prox_vec3 g = phi_grad(s, d);
+    return prox_v3_norm(prox_v3_mad(g, -prox_v3_dot(g, d), d));
+}
+
+/* In a cell (both support points smooth: rims, sphere). */
+static prox_vec3 polish_cell(const sup_search *s, prox_vec3 d)
+{
+    double gn = tgrad_norm(s, d);
+    for (int it = 0; it < 6 && gn > 0.0; ++it) {
+        double f = phi_eval(s, d);
+        prox_vec3 t1 = prox_v3_any_perp(d), t2 = prox_v3_cross(d, t1), g = phi_grad(s, d);
+        double g1 = prox_v3_dot(g, t1), g2 = prox_v3_dot(g, t2);
+        prox_vec3 h1 = phi_hess(s, d, t1), h2 = phi_hess(s, d, t2);
+        double a = prox_v3_dot(t1, h1) - f, b = prox_v3_dot(t1, h2), c = prox_v3_dot(t2, h2) - f, det = a * c - b * b;
+        if (!(a > 0.0 && det > 0.0)) break;
+        double x1 = -(c * g1 - b * g2) / det, x2 = -(a * g2 - b * g1) / det;
+        prox_vec3 dn = unit(prox_v3_add(d, prox_v3_add(prox_v3_scale(t1, x1), prox_v3_scale(t2, x2))));
+        double gnn = tgrad_norm(s, dn);
+        if (!(gnn < gn)) break;
+        d = dn, gn = gnn;
+    }
+    return d;
+}
+
+/* On the ridge D.w = 0 (a lateral line or a box face supports): Newton along the great circle. */
+static prox_vec3 polish_ridge(const sup_search *s, prox_vec3 w, prox_vec3 d)
+{
+    d = prox_v3_reject(d, w);
+    d = prox_v3_reject(d, w);
+    double dn2 = prox_v3_norm2(d);
+    if (!(dn2 > 0.0)) return d;
+    d = unit(d);
+    double g1o = INFINITY;
+    for (int it = 0; it < 6; ++it) {
+        prox_vec3 dt = prox_v3_cross(w, d);
+        double f = phi_eval(s, d), g1 = prox_v3_dot(phi_grad(s, d), dt), g2 = prox_v3_dot(dt, phi_hess(s, d, dt)) - f;
+        if (!(fabs(g1) < g1o) || !(g2 > 0.0)) break;
+        g1o = fabs(g1);
+        prox_vec3 dn = prox_v3_reject(prox_v3_mad(d, -g1 / g2, dt), w);
+        d = unit(prox_v3_reject(dn, w));
+    }
+    return d;
+}
+
+/* Witnesses for the disjoint answer: every direction below names a pair of support sets, every pair
+ * taken from them is a pair of points of A x B, so the closest of the candidates is kept. Candidates:
+ * the search's direction before and after snapping onto a kink, its Newton polish, its polish on each
+ * ridge it is close to, and the cone points (disk normals) it is close to: a face against a side line
+ * tilted by 1e-9 has its exact pair at the disk normal, while the snap may have chosen the ridge.
+ * Returns the candidate direction of the pair kept (the normal of the answer). */
+static prox_vec3 disjoint_witnesses(const sup_search *s, prox_vec3 d0, double sd, prox_vec3 *p1, prox_vec3 *p2)
+{
+    prox_vec3 cand[24];
+    int nc = 0;
+    cand[nc++] = s->best_d;
+    cand[nc++] = d0;
+    cand[nc++] = polish_cell(s, d0);
+    prox_vec3 r[6];
+    int nr = sup_ridges(s->a, r);
+    nr += sup_ridges(s->b, r + nr);
+    for (int i = 0; i < nr && nc < 16; ++i) {
+        double dw = prox_v3_dot(d0, r[i]);
+        if (fabs(dw) < PROX_TOL_KINK) cand[nc++] = polish_ridge(s, r[i], d0);
+        else if (fabs(dw) > 1.0 - PROX_TOL_CONE) cand[nc++] = dw > 0.0 ? r[i] : prox_v3_neg(r[i]);
+        /* the crossing of two ridges it is close to (two side lines: n = W_A x W_B) */
+        for (int j = i + 1; j < nr && nc < 16; ++j) {
+            prox_vec3 x = prox_v3_cross(r[i], r[j]);
+            if (fabs(dw) < PROX_TOL_KINK && fabs(prox_v3_dot(d0, r[j])) < PROX_TOL_KINK && prox_v3_norm(x) > PROX_TOL_PARALLEL)
+                cand[nc++] = unit(prox_v3_dot(x, d0) >= 0.0 ? x : prox_v3_neg(x));
+        }
+    }
+    /* the closest pair; among pairs equally close to rounding, the candidate along which p2 - p1
+     * points best (a kink the search ended 1e-8 rad off gives the same pair) */
+    double best = INFINITY, align = INFINITY, tie = PROX_TOL_SNAP * s->scale;
+    prox_vec3 n = s->best_d;
+    for (int k = 0; k < nc; ++k) {
+        if (!(prox_v3_norm2(cand[k]) > 0.0)) continue;
+        prox_vec3 x, y;
+        sup_witnesses(s->a, s->b, cand[k], sd, &x, &y);
+        double dk = prox_v3_dist(x, y), ak = prox_v3_norm(prox_v3_mad(prox_v3_sub(y, x), -dk, cand[k]));
+        if (dk < best - tie || (dk <= best + tie && ak < align)) {
+            if (dk < best) best = dk;
+            align = ak, *p1 = x, *p2 = y, n = cand[k];
+        }
+    }
+    return n;
 }
 
 /* The result from the best direction found. */
 static prox_signed_result finish(sup_search *s)
 {
+    prox_vec3 d0 = s->best_d;
     snap_to_kinks(s);
     prox_signed_result res = {0};
     res.status = PROX_OK;
     res.sd = -s->best_phi;
     res.normal = s->best_d;
-    sup_witnesses(s->a, s->b, s->best_d, res.sd, &res.p1, &res.p2);
+    if (res.sd > 0.0) {
+        /* the normal is the candidate direction of the witness pair: polished, it makes
+         * p2 - p1 = sd n hold (the search's direction may be 1e-8 rad off, which |p2 - p1| times
+         * would exceed). Not (p2 - p1) / |p2 - p1|: along parallel faces the pair may slide by
+         * sqrt(eps d) sideways at no cost in |p2 - p1|, and a direction that far off a face normal
+         * loses r sqrt(eps d) of the gap. */
+        res.normal = disjoint_witnesses(s, d0, res.sd, &res.p1, &res.p2);
+    } else {
+        sup_witnesses(s->a, s->b, s->best_d, res.sd, &res.p1, &res.p2);
+    }
     return res;
 }
 
@@ -675,7 +904,7 @@ static void search_disjoint(sup_search *s, const prox_vec3 *r, int n)
     }
 }
 
-prox_signed_result sup_signed_distance(const sup_body *a, const sup_body *b, const prox_vec3 *hint)
+prox_signed_result sup_signed_distance(const prox_body *a, const prox_body *b, const prox_vec3 *hint)
 {
     sup_search s = {.a = a, .b = b, .delta = prox_v3_sub(b->c, a->c), .best_phi = INFINITY};
     s.scale = fmax(prox_v3_norm(s.delta), fmax(a->size, b->size));
@@ -687,8 +916,13 @@ prox_signed_result sup_signed_distance(const sup_body *a, const sup_body *b, con
     int n = sup_ridges(a, r);
     n += sup_ridges(b, r + n);
     if (s.best_phi < 0.0) {
-        /* disjoint: local search, then every ridge (a stalled local search ends on one) */
+        /* disjoint: local search, then every ridge (a stalled local search ends on one), unless the
+         * local search's answer is already proved: its witnesses |p2 - p1| (an upper bound) meet
+         * -phi (a lower bound, weak duality) within PROX_TOL_CERT x scale */
         search_disjoint(&s, r, n);
+        sup_search t = s;
+        prox_signed_result early = finish(&t);
+        if (prox_v3_dist(early.p1, early.p2) - early.sd <= PROX_TOL_CERT * s.scale) return early;
         for (int i = 0; i < n; ++i) search_ridge(&s, r[i]);
         cell_newton(&s, s.best_d);
         search_disjoint(&s, r, n);

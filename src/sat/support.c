@@ -1,31 +1,9 @@
-/* Support functions of the four macrobodies (Eberly, "Intersection of Cylinders", Eq. (4) for the
- * cylinder; sum of |d.e_i| half extents for a box; c.d + r|d| for a sphere) and the generic signed
- * distance built on them (sup_engine.c). The cylinder uses prox_rcc_support/_point of rcc_support.c. */
+/* Signed distance of any two macrobodies by the support-function engine (sup_engine.c) alone: the
+ * bodies are the core's (core/body.h), whose support functions are Eberly's Eq. (4) for the cylinder,
+ * the sum of |d.a_k| half extents for a box and c.d + r|d| for a sphere. */
 #include "prox/support.h"
 
-#include "prox/distance.h"
 #include "sup_engine.h"
-
-PROX_API double prox_shape_support(const prox_shape *s, prox_vec3 d)
-{
-    if (s->kind == PROX_SHAPE_RCC) return prox_rcc_support(&s->u.rcc, d);
-    sup_body b = sup_body_make(s);
-    return prox_v3_dot(d, b.c) + sup_hc(&b, d);
-}
-
-PROX_API prox_vec3 prox_shape_support_point(const prox_shape *s, prox_vec3 d)
-{
-    if (s->kind == PROX_SHAPE_RCC) {
-        if (prox_v3_norm2(d) == 0.0) return prox_v3_mad(s->u.rcc.base, 0.5, s->u.rcc.axis);
-        return prox_rcc_support_point(&s->u.rcc, d);
-    }
-    sup_body b = sup_body_make(s);
-    return prox_v3_add(b.c, sup_pc(&b, d));
-}
-
-PROX_API prox_vec3 prox_shape_center(const prox_shape *s) { return sup_body_make(s).c; }
-
-PROX_API double prox_shape_size(const prox_shape *s) { return sup_body_make(s).size; }
 
 PROX_API prox_signed_result prox_shape_signed_distance_support(const prox_shape *a, const prox_shape *b)
 {
@@ -34,6 +12,18 @@ PROX_API prox_signed_result prox_shape_signed_distance_support(const prox_shape 
     r.status = prox_shape_validate(a);
     if (r.status == PROX_OK) r.status = prox_shape_validate(b);
     if (r.status != PROX_OK) return r;
-    sup_body ba = sup_body_make(a), bb = sup_body_make(b);
-    return sup_signed_distance(&ba, &bb, NULL);
+    /* relative to A's centre and at unit scale (a power of two, exact): no square or product of the
+     * pair's numbers can overflow or underflow */
+    prox_body ba = prox_body_make(a), bb = prox_body_make(b);
+    prox_vec3 o = ba.c;
+    ba.c = prox_v3(0, 0, 0);
+    bb.c = prox_v3_sub(bb.c, o);
+    double f = prox_unit_scale(fmax(prox_v3_norm(bb.c), fmax(ba.size, bb.size)));
+    ba = prox_body_scaled(&ba, f);
+    bb = prox_body_scaled(&bb, f);
+    r = sup_signed_distance(&ba, &bb, NULL);
+    r.sd /= f;
+    r.p1 = prox_v3_mad(o, 1.0 / f, r.p1);
+    r.p2 = prox_v3_mad(o, 1.0 / f, r.p2);
+    return r;
 }

@@ -11,7 +11,7 @@
 
 #include "prox/scene.h"
 #include "prox/support.h"
-#include "distance/query_internal.h"
+#include "query/query_internal.h"
 
 #ifdef _OPENMP
 #include <omp.h>

@@ -6,7 +6,7 @@
  * distance: moving B by (margin - sd) along the signed-distance normal leaves the supporting planes at
  * the witnesses exactly `margin` apart, so dist(A, B') = margin. */
 #include "distance/box_internal.h"
-#include "distance/query_internal.h"
+#include "query/query_internal.h"
 #include "prox/distance.h"
 #include "prox/sat.h"
 #include "prox/support.h"
@@ -58,7 +58,9 @@ static prox_signed_result mirror_s(prox_signed_result r)
     return r;
 }
 
-/* RCC-RCC distance: the exact closed-form query of distance.h (Agarwal's primitives, certified). */
+/* RCC-RCC distance by the default method (prox_rcc_distance: prediction and certificate, the
+ * closed-form method when that cannot certify). The cylinder-pair details (Agarwal's case, feature
+ * pair) are left out, as for every other shape pair; the certificate and the method are kept. */
 static prox_distance_result rcc_rcc_distance(const prox_rcc *a, const prox_rcc *b)
 {
     prox_distance_result r = {0};
@@ -70,6 +72,8 @@ static prox_distance_result rcc_rcc_distance(const prox_rcc *a, const prox_rcc *
     r.p1 = e.p1;
     r.p2 = e.p2;
     r.certificate_gap = e.intersect ? 0.0 : e.certificate_gap;
+    r.certified = e.certified;
+    r.method = e.method;
     return r;
 }
 

@@ -1,7 +1,7 @@
 /* Internal: entry points of query.c that hand back intermediate results to other parts of the
  * library (the scene's RELATION mode), so that a pair's dear solver runs once. */
-#ifndef PROX_DISTANCE_QUERY_INTERNAL_H
-#define PROX_DISTANCE_QUERY_INTERNAL_H
+#ifndef PROX_QUERY_QUERY_INTERNAL_H
+#define PROX_QUERY_QUERY_INTERNAL_H
 
 #include "prox/pairs.h"
 #include "prox/query.h"

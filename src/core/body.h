@@ -1,0 +1,88 @@
+/* Internal (core): the generic convex body of the support-function method and of every shape-agnostic
+ * query (scene bounds, containment scales): one of the four macrobodies kept as its centre c plus its
+ * geometry in coordinates centred at c. Every macrobody is centrally symmetric, so its support function
+ * splits as h(d) = d.c + hc(d) with the centred part hc even in d (hc(-d) = hc(d)).
+ *
+ * The per-kind geometry is the core's: a cylinder is a prox_cyl (core/cyl.h, Eberly's Eq. 4 support
+ * function), a box (BOX, and RPP as the box it describes) a prox_bframe (core/box.h), a sphere its
+ * radius (hc(d) = r |d|). Both are prepared relative to the centre, so hc and the centred support
+ * point carry no cancellation against the body's position. */
+#ifndef PROX_CORE_BODY_H
+#define PROX_CORE_BODY_H
+
+#include "core/box.h"
+#include "core/cyl.h"
+#include "prox/shapes.h"
+
+typedef enum prox_body_kind { PROX_BODY_CYL = 0, PROX_BODY_BOX = 1, PROX_BODY_SPH = 2 } prox_body_kind;
+
+typedef struct prox_body {
+    prox_body_kind kind;
+    prox_vec3 c;     /* centre (absolute coordinates) */
+    prox_cyl cyl;    /* PROX_BODY_CYL: the cylinder relative to c (cyl.c = 0) */
+    prox_bframe box; /* PROX_BODY_BOX: the box relative to c (box.m = 0) */
+    double r;        /* PROX_BODY_SPH: radius */
+    double size;     /* largest dimension (tolerance scale): height or diameter, largest edge */
+} prox_body;
+
+/* The body of a valid shape (validate first: this is the hot path of the generic queries). */
+prox_body prox_body_make(const prox_shape *s);
+
+/* Centred support function hc(d) = h(d) - d.c (d need not be unit; hc(0) = 0). */
+static inline double prox_body_hc(const prox_body *b, prox_vec3 d)
+{
+    switch (b->kind) {
+    case PROX_BODY_CYL: return prox_cyl_hc(&b->cyl, d);
+    case PROX_BODY_BOX: return prox_bframe_support(&b->box, d); /* box.m = 0: the centred part alone */
+    default: return b->r * prox_v3_norm(d);
+    }
+}
+
+/* Centred support point: x - c for a point x of the body with d.x = h(d). A zero component of d
+ * (d along a face or perpendicular to an axis) picks the middle of the support set; d = 0 gives 0. */
+prox_vec3 prox_body_pc(const prox_body *b, prox_vec3 d);
+
+/* Support function and support point in absolute coordinates. */
+static inline double prox_body_support(const prox_body *b, prox_vec3 d) { return prox_v3_dot(d, b->c) + prox_body_hc(b, d); }
+static inline prox_vec3 prox_body_support_point(const prox_body *b, prox_vec3 d)
+{
+    return prox_v3_add(b->c, prox_body_pc(b, d));
+}
+
+/* The cylinder of a PROX_BODY_CYL body in absolute coordinates (its frame moved to the centre). */
+static inline prox_cyl prox_body_cyl(const prox_body *b)
+{
+    prox_cyl k = b->cyl;
+    k.c = b->c;
+    k.cap[0] = k.b = prox_v3_add(b->c, b->cyl.cap[0]);
+    k.cap[1] = prox_v3_add(b->c, b->cyl.cap[1]);
+    return k;
+}
+
+/* A cylinder scaled by f about the origin (f a power of two: exact). */
+static inline prox_cyl prox_cyl_scaled(const prox_cyl *k, double f)
+{
+    prox_cyl s = *k;
+    s.b = prox_v3_scale(k->b, f);
+    s.c = prox_v3_scale(k->c, f);
+    s.cap[0] = prox_v3_scale(k->cap[0], f);
+    s.cap[1] = prox_v3_scale(k->cap[1], f);
+    s.h *= f, s.hh *= f, s.r *= f;
+    return s;
+}
+
+/* The body scaled by f about the origin (f a power of two: exact, barring underflow below 1e-300,
+ * which the supported range excludes). The support method runs a pair at unit scale, where no square
+ * or product of its coordinates and sizes can overflow or underflow. */
+prox_body prox_body_scaled(const prox_body *b, double f);
+
+/* The power of two nearest below 1/S: scaling a pair of scale S by it brings S into [1, 2). */
+double prox_unit_scale(double S);
+
+/* 1 when x (absolute coordinates) lies in the closed body enlarged by tol (tol >= 0, absolute). */
+int prox_body_contains(const prox_body *b, prox_vec3 x, double tol);
+
+/* Closest point of the solid body to x (x itself when inside), absolute coordinates. */
+prox_vec3 prox_body_closest(const prox_body *b, prox_vec3 x);
+
+#endif

@@ -1,0 +1,24 @@
+/* BOX-RCC signed distance: the exact distance of src/distance when the solids are disjoint, the
+ * penetration depth of the support-function engine (src/sat) when they overlap. It composes the two
+ * modules, hence lives here and not in either of them. */
+#include "core/box.h"
+#include "prox/pairs.h"
+#include "prox/support.h"
+
+PROX_API prox_signed_result prox_box_rcc_signed_distance(const prox_box *a, const prox_rcc *b)
+{
+    prox_signed_result r = {0};
+    prox_distance_result d = prox_box_rcc_distance(a, b);
+    r.status = d.status;
+    if (r.status != PROX_OK) return r;
+    if (!d.intersect && d.distance > 0.0) { /* disjoint: sd = distance, unit normal from p1 to p2 */
+        r.sd = d.distance;
+        r.normal = prox_v3_divs(prox_v3_sub(d.p2, d.p1), d.distance);
+        r.p1 = d.p1;
+        r.p2 = d.p2;
+        return r;
+    }
+    /* overlapping: minimum of h_A(D) + h_B(-D) over unit D (support-function engine) */
+    prox_shape sa = prox_shape_from_box(*a), sb = prox_shape_from_rcc(*b);
+    return prox_shape_signed_distance_support(&sa, &sb);
+}

@@ -1,0 +1,39 @@
+/* Internal: the support method's entry points for the composition layer (src/query/). Everything here
+ * uses only the geometric core (src/core/), never the closed-form or fast distance (src/distance/), so
+ * that comparing the two is an independent cross-check.
+ *
+ *   prox_sat_rcc_signed  the support method alone for both signs (the second method of the cross-check);
+ *   prox_sat_rcc_depth   the penetration depth of a pair already known to overlap (for the public
+ *                        signed distance: the fast distance when disjoint, this when overlapping);
+ *   prox_rcc_distance_support (prox/sat.h) and prox_shape_signed_distance_support (prox/support.h) are
+ *                        public. */
+#ifndef PROX_SAT_INTERNAL_H
+#define PROX_SAT_INTERNAL_H
+
+#include "core/cyl.h"
+#include "prox/result.h"
+#include "prox/shapes.h"
+
+#include <stddef.h>
+
+/* The separating-axis verdict on prepared cylinders (both relative to the same origin). */
+prox_test_result prox_sat_cyl(const prox_cyl *a, const prox_cyl *b);
+
+/* A common point of two overlapping prepared cylinders from the final portal of the Minkowski portal
+ * refinement (rcc_sat.c, portal_apart): 1 and *x when the portal certified the overlap (or ended in
+ * the touching band, the point then within PROX_TOL_SEARCH x scale of both); 0 when the pair is
+ * separated or the portal degenerate. The caller verifies the point (prox_cyl_contains). */
+int prox_sat_common_point(const prox_cyl *a, const prox_cyl *b, prox_vec3 *x);
+
+/* Signed distance of two solid cylinders by the support method alone (both signs): the SAT's
+ * separating direction starts the certified minimisation of h_A(D) + h_B(-D); overlapping pairs take
+ * the depth of prox_sat_rcc_depth. Validates both (status PROX_EINVAL_* on bad input, PROX_ENUMERIC
+ * when a circle solver failed). */
+prox_signed_result prox_sat_rcc_signed(const prox_rcc *a, const prox_rcc *b);
+
+/* Penetration depth of two solid cylinders known to overlap (sd <= 0 up to the touching band):
+ * enumeration of the strata (rcc_depth.c), the global search of sup_engine.c when a stratum cannot be
+ * settled. Validates both. */
+prox_signed_result prox_sat_rcc_depth(const prox_rcc *a, const prox_rcc *b);
+
+#endif
