@@ -6,7 +6,7 @@
  * A and p2 in B within 1e-12 S; d = 0 and p1 = p2 in both solids for overlapping pairs. Also the
  * option's errors and `prox --version`. */
 #define _POSIX_C_SOURCE 200809L
-#include "test_util.h"
+#include "test_refsets.h"
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -40,27 +40,6 @@ static int run_cli(const char *args, const char *input)
     return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
 }
 
-/* Reads whitespace-separated doubles, `per` to a line; returns the number of lines. */
-static size_t read_table(const char *path, int per, double **out)
-{
-    FILE *f = fopen(path, "r");
-    if (!f) {
-        print_error("cannot open %s\n", path);
-        fail();
-    }
-    size_t cap = 4096, n = 0;
-    double *v = malloc(cap * sizeof *v);
-    double x;
-    while (fscanf(f, "%lf", &x) == 1) {
-        if (n == cap) v = realloc(v, (cap *= 2) * sizeof *v);
-        v[n++] = x;
-    }
-    fclose(f);
-    assert_int_equal(n % (size_t)per, 0);
-    *out = v;
-    return n / (size_t)per;
-}
-
 /* Distance from x to the solid cylinder (0 inside), in long double. */
 static double outside(const prox_rcc *c, prox_vec3 x)
 {
@@ -82,12 +61,6 @@ static double coord_size(const prox_rcc *c)
 {
     prox_vec3 t = prox_v3_add(c->base, c->axis);
     return fmax(prox_v3_maxabs(c->base), prox_v3_maxabs(t));
-}
-
-static prox_rcc rcc_of(const double *v)
-{
-    prox_rcc c = {prox_v3(v[0], v[1], v[2]), prox_v3(v[3], v[4], v[5]), v[6]};
-    return c;
 }
 
 /* Runs the method on one reference set and checks every line against the bar. */

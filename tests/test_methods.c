@@ -6,34 +6,11 @@
  * the geometric core, so their agreement is an independent check of each. */
 #include <stdlib.h>
 
-#include "test_util.h"
+#include "test_refsets.h"
 
 #include "../bench/stress_gen.h"
 
 static const prox_method methods[3] = {PROX_METHOD_FAST, PROX_METHOD_CLOSED_FORM, PROX_METHOD_SUPPORT};
-
-static prox_rcc rcc_of(const double *v) { return (prox_rcc){prox_v3(v[0], v[1], v[2]), prox_v3(v[3], v[4], v[5]), v[6]}; }
-
-/* Reads whitespace-separated doubles, `per` to a line; returns the number of lines. */
-static size_t read_table(const char *path, int per, double **out)
-{
-    FILE *f = fopen(path, "r");
-    if (!f) {
-        print_error("cannot open %s (the reference sets live in tests/data)\n", path);
-        fail();
-    }
-    size_t cap = 4096, n = 0;
-    double *v = malloc(cap * sizeof *v);
-    double x;
-    while (fscanf(f, "%lf", &x) == 1) {
-        if (n == cap) v = realloc(v, (cap *= 2) * sizeof *v);
-        v[n++] = x;
-    }
-    fclose(f);
-    assert_int_equal(n % (size_t)per, 0);
-    *out = v;
-    return n / (size_t)per;
-}
 
 /* Allowed absolute error of a pair: 1e-12 S plus the rounding the input doubles carry. */
 static double pair_tol(const prox_rcc *a, const prox_rcc *b)

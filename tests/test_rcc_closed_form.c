@@ -6,40 +6,13 @@
  * the GSL-rooted degree-8 polynomial; the degenerate contacts (coaxial rims, parallel axes, parallel
  * faces, perpendicular disk and side, nested, point contacts); a root-finder failure reported as
  * PROX_ENUMERIC; invalid input. */
-#include "test_util.h"
+#include "test_refsets.h"
 #include <stdlib.h>
 #include <string.h>
 
 #include "core/poly.h"
 #include "distance/rcc_methods.h"
 #include "../bench/stress_gen.h"
-
-static prox_rcc rcc_of(const double *v)
-{
-    prox_rcc c = {prox_v3(v[0], v[1], v[2]), prox_v3(v[3], v[4], v[5]), v[6]};
-    return c;
-}
-
-/* Reads whitespace-separated doubles, `per` to a line; returns the number of lines. */
-static size_t read_table(const char *path, int per, double **out)
-{
-    FILE *f = fopen(path, "r");
-    if (!f) {
-        print_error("cannot open %s (the reference sets live in tests/data)\n", path);
-        fail();
-    }
-    size_t cap = 4096, n = 0;
-    double *v = malloc(cap * sizeof *v);
-    double x;
-    while (fscanf(f, "%lf", &x) == 1) {
-        if (n == cap) v = realloc(v, (cap *= 2) * sizeof *v);
-        v[n++] = x;
-    }
-    fclose(f);
-    assert_int_equal(n % (size_t)per, 0);
-    *out = v;
-    return n / (size_t)per;
-}
 
 /* Tolerance on points: 1e-12 S plus the rounding of the output coordinates (pairs far away). */
 static double point_tol(const prox_distance_result *r, double S)

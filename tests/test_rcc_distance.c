@@ -1,48 +1,8 @@
 /* RCC-RCC exact distance: Agarwal's Table 1, the reference sets of tests/data, seeded
  * property tests (symmetry, rigid motion, scale, continuity), containment, point sets, bad input. */
-#include "test_util.h"
+#include "test_refsets.h"
 #include <stdlib.h>
 #include <string.h>
-
-/* Signed distance from x to the boundary of the solid cylinder (negative inside). */
-static double cyl_sdf(const prox_rcc *c, prox_vec3 x)
-{
-    double h = prox_v3_norm(c->axis);
-    prox_vec3 w = prox_v3_scale(c->axis, 1.0 / h);
-    prox_vec3 d = prox_v3_sub(x, c->base);
-    double t = prox_v3_dot(d, w);
-    double rho = prox_v3_norm(prox_v3_reject(d, w));
-    double dr = rho - c->radius, dt = fmax(-t, t - h);
-    if (dr <= 0 && dt <= 0) return fmax(dr, dt);
-    return hypot(fmax(dr, 0.0), fmax(dt, 0.0));
-}
-
-static prox_rcc rcc_of(const double *v)
-{
-    prox_rcc c = {prox_v3(v[0], v[1], v[2]), prox_v3(v[3], v[4], v[5]), v[6]};
-    return c;
-}
-
-/* Reads whitespace-separated doubles, `per` to a line; returns the number of lines. */
-static size_t read_table(const char *path, int per, double **out)
-{
-    FILE *f = fopen(path, "r");
-    if (!f) {
-        print_error("cannot open %s (the reference sets live in tests/data)\n", path);
-        fail();
-    }
-    size_t cap = 4096, n = 0;
-    double *v = malloc(cap * sizeof *v);
-    double x;
-    while (fscanf(f, "%lf", &x) == 1) {
-        if (n == cap) v = realloc(v, (cap *= 2) * sizeof *v);
-        v[n++] = x;
-    }
-    fclose(f);
-    assert_int_equal(n % (size_t)per, 0);
-    *out = v;
-    return n / (size_t)per;
-}
 
 typedef struct set_stats {
     double max_derr, max_perr, max_onerr;

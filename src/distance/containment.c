@@ -9,7 +9,7 @@
  * axis: the farthest point from the axis of the ellipse the rim projects onto
  * (prox_cyl_in_cyl_clearance, core/cyl_contain.c: the containment the RCC-RCC query shares). */
 #include "distance/box_internal.h"
-#include "prox/support.h"
+#include "core/body.h"
 
 static double box_point_clear(const prox_bframe *B, prox_vec3 x)
 {
@@ -35,8 +35,8 @@ static prox_contain_result finish(double clear, prox_shape a, prox_shape b)
 {
     prox_contain_result r = {0};
     r.status = PROX_OK;
-    double s = prox_v3_dist(prox_shape_center(&a), prox_shape_center(&b));
-    s = fmax(s, fmax(prox_shape_size(&a), prox_shape_size(&b)));
+    prox_body ba = prox_body_make(&a), bb = prox_body_make(&b);
+    double s = fmax(prox_v3_dist(ba.c, bb.c), fmax(ba.size, bb.size));
     r.clearance = clear;
     r.inside = clear >= -PROX_QUERY_REL_TOL * s;
     return r;
