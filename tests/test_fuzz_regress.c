@@ -107,6 +107,33 @@ static void test_fuzz_rim_rim_overflow(void **state)
     assert_near(g.sd, r.distance, 1e-12 * r.distance);
 }
 
+/* fuzz_queries crash queries-needle-depth-f036de42: a needle (radius 7.2e-84, height 46) crossing a
+ * cylinder of radius 32.5. The penetration depth's feature enumeration cannot form the degree-8
+ * polynomial of two rims ~1e85 apart in size (its coefficients overflow); the signed distance must
+ * then come from the global support-function search, not fail with PROX_ENUMERIC: every method
+ * agrees that the pair overlaps, and the depth is at most the needle's radius plus rounding. */
+static void test_fuzz_needle_depth(void **state)
+{
+    (void)state;
+    prox_rcc a = {prox_v3(7.2911185428784936e-304, 2.1219957909652723e-314, 8.8780446954437335e-306),
+                  prox_v3(32, 32.501964226947621, 32.501960784313724), 32.501960784313724};
+    prox_rcc b = {prox_v3(0, 0, 32.5), prox_v3(32.501960784313724, 32.501956939348474, 6.594809546681169e-96),
+                  7.2486056071305163e-84};
+    for (int m = 0; m < PROX_METHOD_COUNT_; ++m) {
+        prox_distance_result d = prox_rcc_distance_ex(&a, &b, (prox_method)m);
+        assert_int_equal(d.status, PROX_OK);
+        assert_true(d.intersect);
+    }
+    prox_signed_result g = prox_rcc_signed_distance(&a, &b), g2 = prox_rcc_signed_distance(&b, &a);
+    assert_int_equal(g.status, PROX_OK);
+    assert_int_equal(g2.status, PROX_OK);
+    assert_true(isfinite(g.sd) && g.sd <= 0.0 && prox_v3_isfinite(g.p1) && prox_v3_isfinite(g.p2));
+    assert_near(g2.sd, g.sd, 1e-9 * prox_rcc_pair_scale(&a, &b));
+    /* moving the needle by the depth along the normal clears it: the depth is at most how far the
+     * needle's axis sits inside A plus its radius, i.e. no more than A's radius */
+    assert_true(-g.sd <= a.radius * (1 + 1e-12));
+}
+
 int main(void)
 {
     test_init();
@@ -116,6 +143,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_extreme_needle_disk),
         cmocka_unit_test(test_fuzz_deck_blank_card),
         cmocka_unit_test(test_fuzz_rim_rim_overflow),
+        cmocka_unit_test(test_fuzz_needle_depth),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -37,16 +37,14 @@ static prox_signed_result absolute(prox_signed_result r, prox_vec3 o, double f)
     return r;
 }
 
-/* Depth of the bodies of an overlapping pair: the enumeration, else the global search. */
+/* Depth of the bodies of an overlapping pair: the enumeration, else the global search. The
+ * enumeration is an accelerator: when one of its circle solvers cannot root its polynomial (rims whose
+ * sizes are ~1e80 apart overflow the degree-8 coefficients), the global search, which needs no
+ * polynomial, answers instead. */
 static prox_signed_result depth_bodies(const prox_body *ba, const prox_body *bb)
 {
     prox_signed_result r = {0};
     int rc = sup_rcc_depth_enum(ba, bb, &r);
-    if (rc < 0) { /* a circle solver failed */
-        prox_signed_result e = {0};
-        e.status = (prox_status)-rc;
-        return e;
-    }
     if (rc == 1) return r;
     return sup_signed_distance(ba, bb, NULL);
 }
