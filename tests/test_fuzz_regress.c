@@ -134,6 +134,38 @@ static void test_fuzz_needle_depth(void **state)
     assert_true(-g.sd <= a.radius * (1 + 1e-12));
 }
 
+/* fuzz_queries crash queries-long-needle-closed-form: a cylinder 1.1e93 long and 32.5 wide crossing
+ * a flat one of radius 19716. The closed-form method's rim / lateral-surface quartic cannot be formed
+ * for a rim ~1e91 radii from the other axis (its coefficients overflow); that rim then stands in as
+ * a point, whose error is below 1e-90 S, instead of failing with PROX_ENUMERIC. Checked on the
+ * crossing pair and on the same pair pulled 1000 apart, where the three methods must agree to
+ * 1e-12 S (S = 1.1e93: the closed-form verdict may call a gap of 1e-90 S touching). */
+static void test_fuzz_long_needle_closed_form(void **state)
+{
+    (void)state;
+    prox_rcc a = {prox_v3(2.2250738585072014e-308, 0, 1.2142157312194475e-319),
+                  prox_v3(7.2911220195563975e-304, -1.1040734991732915e+93, 32.501960784313724),
+                  32.501960784314576};
+    prox_rcc b = {prox_v3(32.501960784313724, 32.501960784314576, 32.501960784313724),
+                  prox_v3(1.3906499416903551e-309, 5.4323092248710971e-312, 33.650419235229492),
+                  19715.750015318627};
+    for (int k = 0; k < 2; ++k) {
+        prox_distance_result d[PROX_METHOD_COUNT_];
+        for (int m = 0; m < PROX_METHOD_COUNT_; ++m) {
+            d[m] = prox_rcc_distance_ex(&a, &b, (prox_method)m);
+            assert_int_equal(d[m].status, PROX_OK);
+            if (k == 0) assert_true(d[m].intersect);
+            assert_true(isfinite(d[m].distance) && prox_v3_isfinite(d[m].p1) && prox_v3_isfinite(d[m].p2));
+            assert_near(d[m].distance, d[0].distance, 1e-12 * prox_rcc_pair_scale(&a, &b));
+        }
+        if (k == 1) { /* the fast and support methods resolve the gap itself */
+            assert_near(d[PROX_METHOD_FAST].distance, 1000.0, 1e-9);
+            assert_near(d[PROX_METHOD_SUPPORT].distance, 1000.0, 1e-9);
+        }
+        b.base.z += 1000.0; /* above A's top side (z <= 32.5 there): disjoint by 1000 */
+    }
+}
+
 int main(void)
 {
     test_init();
@@ -144,6 +176,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_deck_blank_card),
         cmocka_unit_test(test_fuzz_rim_rim_overflow),
         cmocka_unit_test(test_fuzz_needle_depth),
+        cmocka_unit_test(test_fuzz_long_needle_closed_form),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

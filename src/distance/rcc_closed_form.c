@@ -161,6 +161,23 @@ static prox_agarwal_case cf_lat_lat(cf_query *q)
 
 /* ---- C-S: a rim against the other lateral surface (Sec. 3.3) ---- */
 
+/* The quartic of a rim against a line overflows only when the rim's distance from the line is ~1e100
+ * times its radius or more (prox_circle_line_stationary): the distance then varies over the rim by
+ * at most 2r <= 1e-90 S, so the rim stands in for a point. Its candidates are the rim points nearest
+ * to and farthest from the line, along the line's perpendicular through the centre, projected into
+ * the rim's plane (any pair of opposite points when that projection vanishes); each is a genuine
+ * point of the rim, and the certificate judges the answer as for any other candidate. */
+static int cf_rim_far_points(const prox_fcircle *C, const prox_cyl *lc, prox_unit2 a[4])
+{
+    prox_vec3 e = prox_cyl_perp(lc, prox_v3_sub(C->c, lc->b));
+    double du = prox_v3_dot(e, C->u), dv = prox_v3_dot(e, C->v);
+    double m = fmax(fabs(du), fabs(dv));
+    if (!(m > 0.0) || !isfinite(m)) du = 1.0, dv = 0.0, m = 1.0;
+    a[0] = prox_unit2_of(du / m, dv / m);
+    a[1] = (prox_unit2){-a[0].c, -a[0].s};
+    return 2;
+}
+
 /* Every stationary angle of the rim's squared distance to the other axis (Eq. (16) eliminates the
  * axial parameter, the half-angle substitution gives the quartic g2; prox_circle_line_stationary).
  * A stationary point whose foot lies on the finite axis gives the rim point and its closest point of
@@ -176,8 +193,8 @@ static prox_status cf_rim_lat(cf_query *q, int own, int end)
     prox_unit2 a[4] = {{1.0, 0.0}}; /* rim coaxial with the other axis: every point is equivalent */
     int cnt = 0;
     int rc = prox_circle_line_stationary(C, lc->b, lc->w, th, &cnt);
-    if (rc < 0) return PROX_ENUMERIC; /* the quartic could not be rooted */
-    if (rc == 1) cnt = 1;
+    if (rc < 0) cnt = cf_rim_far_points(C, lc, a); /* the quartic overflows: the rim is a point */
+    else if (rc == 1) cnt = 1;
     else
         for (int i = 0; i < cnt; ++i) a[i] = (prox_unit2){cos(th[i]), sin(th[i])};
     for (int i = 0; i < cnt; ++i) {
