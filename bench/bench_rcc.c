@@ -109,7 +109,7 @@ void bench_group_rcc(const bench_opts *o)
         subset *s = &nf[is_near[i] ? 0 : 1];
         s->idx[s->n++] = i;
     }
-    const bench_method *methods[4];
+    const bench_method *methods[16];
     int nm = 0;
     methods[nm++] = &bench_capsule_method;
     for (const bench_method *const *m = bench_prox_methods; *m; ++m) methods[nm++] = *m;
