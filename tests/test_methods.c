@@ -32,13 +32,8 @@ static double witness_err(const prox_rcc *a, const prox_rcc *b, const prox_dista
 /* One method on one reference set: every pair within the bar. Returns the number of failures. */
 static int check_set(const char *name, prox_method m)
 {
-    char pp[512], rp[512];
-    snprintf(pp, sizeof pp, "%s/%s.pairs", PROX_VALIDATION_DIR, name);
-    snprintf(rp, sizeof rp, "%s/%s.ref", PROX_VALIDATION_DIR, name);
     double *P, *R;
-    size_t n = read_table(pp, 14, &P), nr = read_table(rp, 7, &R);
-    assert_int_equal(n, nr);
-    assert_true(n > 0);
+    size_t n = load_set(name, &P, &R);
     int bad = 0, handed = 0, unproved = 0;
     double worst_d = 0.0, worst_w = 0.0;
     for (size_t i = 0; i < n; ++i) {

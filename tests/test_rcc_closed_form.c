@@ -41,13 +41,8 @@ static int answer_valid(const prox_rcc *a, const prox_rcc *b, const prox_distanc
  * overlapping pair (sd <= 0) intersecting with a common point. */
 static void check_reference_set(const char *name)
 {
-    char pp[512], rp[512];
-    snprintf(pp, sizeof pp, "%s/%s.pairs", PROX_VALIDATION_DIR, name);
-    snprintf(rp, sizeof rp, "%s/%s.ref", PROX_VALIDATION_DIR, name);
     double *P, *R;
-    size_t n = read_table(pp, 14, &P), m = read_table(rp, 7, &R);
-    assert_int_equal(n, m);
-    assert_true(n > 0);
+    size_t n = load_set(name, &P, &R);
     size_t bad = 0, overlaps = 0, kinds[8] = {0};
     double worst = 0.0;
     for (size_t i = 0; i < n; ++i) {

@@ -13,13 +13,8 @@ typedef struct set_stats {
 /* Checks one reference set; every pair must meet the accuracy bar (1e-12 S, tests/data/README.md). */
 static void check_reference_set(const char *name, set_stats *st)
 {
-    char pp[512], rp[512];
-    snprintf(pp, sizeof pp, "%s/%s.pairs", PROX_VALIDATION_DIR, name);
-    snprintf(rp, sizeof rp, "%s/%s.ref", PROX_VALIDATION_DIR, name);
     double *P, *R;
-    size_t n = read_table(pp, 14, &P), m = read_table(rp, 7, &R);
-    assert_int_equal(n, m);
-    assert_true(n > 0);
+    size_t n = load_set(name, &P, &R);
     memset(st, 0, sizeof *st);
     st->n = n;
     for (size_t i = 0; i < n; ++i) {

@@ -49,4 +49,17 @@ static inline size_t read_table(const char *path, int per, double **out)
     return n / (size_t)per;
 }
 
+/* Reads reference set `name` of tests/data: *P its pairs (14 numbers a line), *R its reference
+ * answers (7 a line: sd, p1, p2); returns the number of pairs (the two files agree, and it is > 0). */
+static inline size_t load_set(const char *name, double **P, double **R)
+{
+    char pp[512], rp[512];
+    snprintf(pp, sizeof pp, "%s/%s.pairs", PROX_VALIDATION_DIR, name);
+    snprintf(rp, sizeof rp, "%s/%s.ref", PROX_VALIDATION_DIR, name);
+    size_t n = read_table(pp, 14, P), m = read_table(rp, 7, R);
+    assert_int_equal(n, m);
+    assert_true(n > 0);
+    return n;
+}
+
 #endif

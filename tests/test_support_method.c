@@ -51,13 +51,8 @@ static int check_answer(const char *name, size_t i, const prox_rcc *a, const pro
 /* Runs a reference set, both orders of each pair; fails on any bad answer. */
 static void check_set(const char *name)
 {
-    char pp[512], rp[512];
-    snprintf(pp, sizeof pp, "%s/%s.pairs", PROX_VALIDATION_DIR, name);
-    snprintf(rp, sizeof rp, "%s/%s.ref", PROX_VALIDATION_DIR, name);
     double *P, *R;
-    size_t n = read_table(pp, 14, &P), m = read_table(rp, 7, &R);
-    assert_int_equal(n, m);
-    assert_true(n > 0);
+    size_t n = load_set(name, &P, &R);
     int bad = 0, overlaps = 0, asym = 0;
     for (size_t i = 0; i < n; ++i) {
         prox_rcc a = rcc_of(P + 14 * i), b = rcc_of(P + 14 * i + 7);
@@ -87,12 +82,8 @@ static void check_set(const char *name)
  * 1e-9 S, witnesses in their solids and p2 - p1 = sd n. */
 static void check_signed_set(const char *name)
 {
-    char pp[512], rp[512];
-    snprintf(pp, sizeof pp, "%s/%s.pairs", PROX_VALIDATION_DIR, name);
-    snprintf(rp, sizeof rp, "%s/%s.ref", PROX_VALIDATION_DIR, name);
     double *P, *R;
-    size_t n = read_table(pp, 14, &P), m = read_table(rp, 7, &R);
-    assert_int_equal(n, m);
+    size_t n = load_set(name, &P, &R);
     int bad = 0;
     for (size_t i = 0; i < n; ++i) {
         prox_rcc a = rcc_of(P + 14 * i), b = rcc_of(P + 14 * i + 7);

@@ -56,27 +56,32 @@ static prox_status validate_pair(const prox_rcc *a, const prox_rcc *b)
     return s == PROX_OK ? prox_rcc_validate(b) : s;
 }
 
+/* A validated pair as bodies at unit scale (pair_bodies); the status of the first invalid input. */
+static prox_status prepare(const prox_rcc *a, const prox_rcc *b, prox_body *ba, prox_body *bb, prox_vec3 *o,
+                           double *f)
+{
+    prox_status s = validate_pair(a, b);
+    if (s == PROX_OK) pair_bodies(a, b, ba, bb, o, f);
+    return s;
+}
+
 prox_signed_result prox_sat_rcc_depth(const prox_rcc *a, const prox_rcc *b)
 {
     prox_signed_result r = {0};
-    r.status = validate_pair(a, b);
-    if (r.status != PROX_OK) return r;
     prox_body ba, bb;
     prox_vec3 o;
     double f;
-    pair_bodies(a, b, &ba, &bb, &o, &f);
+    if ((r.status = prepare(a, b, &ba, &bb, &o, &f)) != PROX_OK) return r;
     return absolute(depth_bodies(&ba, &bb), o, f);
 }
 
 prox_signed_result prox_sat_rcc_signed(const prox_rcc *a, const prox_rcc *b)
 {
     prox_signed_result r = {0};
-    r.status = validate_pair(a, b);
-    if (r.status != PROX_OK) return r;
     prox_body ba, bb;
     prox_vec3 o;
     double f;
-    pair_bodies(a, b, &ba, &bb, &o, &f);
+    if ((r.status = prepare(a, b, &ba, &bb, &o, &f)) != PROX_OK) return r;
     prox_cyl c0 = prox_body_cyl(&ba), c1 = prox_body_cyl(&bb); /* the verdict on the same cylinders */
     prox_test_result s = prox_sat_cyl(&c0, &c1);
     if (s.intersect) return absolute(depth_bodies(&ba, &bb), o, f);
