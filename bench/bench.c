@@ -193,6 +193,7 @@ static void print_row(FILE *csv, const bench_case *c, const case_stats *st, int 
 }
 
 void bench_group_crosscheck(const bench_opts *o); /* bench/bench_crosscheck.c */
+void bench_group_mix(const bench_opts *o);        /* bench/bench_mix.c */
 
 int main(int argc, char **argv)
 {
@@ -229,6 +230,7 @@ int main(int argc, char **argv)
     bench_group_stress(&o);
     bench_group_crosscheck(&o);
     bench_group_query(&o);
+    bench_group_mix(&o);
 
     FILE *csv = NULL;
     if (csv_path && !(csv = fopen(csv_path, "w"))) {

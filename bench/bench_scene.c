@@ -1,8 +1,13 @@
 /* Scene benchmark (docs/scene.md): wall time of scene queries on 10^3, 10^4, 10^5 mixed bodies at a
- * fixed density (mean spacing 4 x the typical body size), candidate pairs from the sort-and-sweep
- * and exact queries run against the naive all-pairs count, on 1 and 2 threads; then the cost of each
- * query mode and of the batch API on one seeded set of pairs. Inputs are built before timing; each
- * figure is the median of 3 runs. */
+ * fixed density (mean spacing 4 x the typical body size), candidate pairs from the broad phase
+ * (src/scene/broad.c) and exact queries run against the naive all-pairs count, on 1 and 2 threads;
+ * then the cost of each query mode and of the batch API on one seeded set of pairs. Inputs are built
+ * before timing; each figure is the median of 3 runs.
+ *
+ * Scaling mode (docs/perf/scene_scaling.md): with PROX_BENCH_SCENE_N=n in the environment the group
+ * runs only the question of `prox check` (RELATION at clearance 0) on n RCC/RPP/SPH bodies at the
+ * same density, once on 1 and once on 2 threads, so that /usr/bin/time -v of the process gives the
+ * peak memory of one size: PROX_BENCH_SCENE_N=1000000 /usr/bin/time -v prox_bench --filter scene */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime */
 #include <stdint.h>
 #include <stdlib.h>
@@ -85,7 +90,7 @@ static void bs_scene_case(FILE *csv, prox_scene *sc, size_t n, const char *what,
     }
     qsort(t, 3, sizeof t[0], cmp_double);
     char name[96], note[256];
-    snprintf(name, sizeof name, "scene/%s/%s/n=%zu/t=%d", what, naive ? "naive" : "sweep", n, threads);
+    snprintf(name, sizeof name, "scene/%s/%s/n=%zu/t=%d", what, naive ? "naive" : "broad", n, threads);
     snprintf(note, sizeof note,
              "wall_ms=%.2f;naive_pairs=%zu;candidates=%zu;bound=%zu;support=%zu;tests=%zu;exact=%zu;reported=%zu;status=%d",
              1e3 * t[1], rep.stats.naive_pairs, rep.stats.candidates, rep.stats.bound_rejects, rep.stats.support_decided,
@@ -120,7 +125,7 @@ static void bs_scenes(FILE *csv)
         snprintf(note, sizeof note, "wall_ms=%.2f;candidates=%zu;exact=%zu;distance=%.6g", 1e3 * (now_s() - t0),
                  r.stats.candidates, r.stats.exact, r.npairs ? r.pairs[0].r.distance : -1.0);
         char name[96];
-        snprintf(name, sizeof name, "scene/nearest/sweep/n=%zu/t=1", n);
+        snprintf(name, sizeof name, "scene/nearest/broad/n=%zu/t=1", n);
         bs_row(csv, name, n, 0, 0, note);
         prox_scene_report_free(&r);
         prox_scene_destroy(sc);
@@ -162,8 +167,64 @@ done:
     free(a), free(b), free(out);
 }
 
+/* A random RCC, RPP or SPH around c, sizes as bench/gen_scene.py draws them. */
+static prox_shape bs_body3(uint64_t *s, prox_vec3 c)
+{
+    int kind = (int)(bs_uniform(s) * 3);
+    if (kind == 0) return prox_shape_from_sph((prox_sph){c, bs_range(s, 0.2, 1.0)});
+    if (kind == 1) {
+        prox_vec3 ax = prox_v3_scale(bs_unit(s), bs_range(s, 0.5, 3.0));
+        return prox_shape_from_rcc((prox_rcc){prox_v3_mad(c, -0.5, ax), ax, bs_range(s, 0.2, 1.0)});
+    }
+    double h[3] = {bs_range(s, 0.2, 1), bs_range(s, 0.2, 1), bs_range(s, 0.2, 1)};
+    return prox_shape_from_rpp((prox_rpp){c.x - h[0], c.x + h[0], c.y - h[1], c.y + h[1], c.z - h[2], c.z + h[2]});
+}
+
+/* Process CPU time (both threads' time adds up). */
+static double cpu_s(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/* The scaling mode: one scene of n bodies, the question of `prox check`, on 1 and 2 threads. */
+static void bs_scale(FILE *csv, size_t n)
+{
+    uint64_t seed = 1000 + n;
+    double L = 4.0 * cbrt((double)n), t0 = now_s();
+    prox_scene *sc = prox_scene_create();
+    for (size_t i = 0; i < n && sc; ++i) {
+        prox_shape b = bs_body3(&seed, prox_v3(bs_range(&seed, 0, L), bs_range(&seed, 0, L), bs_range(&seed, 0, L)));
+        if (prox_scene_add(sc, &b) != PROX_OK) break;
+    }
+    if (!sc) return;
+    double build = now_s() - t0;
+    for (int threads = 1; threads <= 2; ++threads) {
+        prox_scene_set_threads(sc, threads);
+        double w0 = now_s(), c0 = cpu_s();
+        prox_scene_report rep = prox_scene_pairs(sc, 0.0, PROX_MODE_RELATION);
+        double wall = now_s() - w0, cpu = cpu_s() - c0;
+        char name[96], note[320];
+        snprintf(name, sizeof name, "scene/scale/relation/n=%zu/t=%d", n, threads);
+        snprintf(note, sizeof note,
+                 "wall_ms=%.1f;cpu_ms=%.1f;add_ms=%.1f;candidates=%zu;bound=%zu;support=%zu;exact=%zu;reported=%zu;status=%d",
+                 1e3 * wall, 1e3 * cpu, 1e3 * build, rep.stats.candidates, rep.stats.bound_rejects,
+                 rep.stats.support_decided, rep.stats.exact, rep.stats.reported, (int)rep.status);
+        bs_row(csv, name, n, 1e9 * wall, 1e9 * wall / (double)n, note);
+        prox_scene_report_free(&rep);
+    }
+    prox_scene_destroy(sc);
+}
+
 void prox_bench_scene(FILE *csv)
 {
+    const char *scale = getenv("PROX_BENCH_SCENE_N");
+    if (scale && *scale) {
+        long long n = atoll(scale);
+        if (n > 0) bs_scale(csv, (size_t)n);
+        return;
+    }
     bs_modes(csv);
     bs_scenes(csv);
 }

@@ -8,6 +8,7 @@
 # the record are in fuzz/crashes/). Prints the build and run times.
 # Reproducible runs (CI): PROX_FUZZ_SEED=S fixes libFuzzer's seed and PROX_FUZZ_RUNS=N stops each
 # harness after N inputs (the seconds then only cap the time), so the same inputs are tried every run.
+# PROX_FUZZ_ONLY="queries pairs" runs only the named harnesses (all three are still built).
 set -eu
 SECONDS_PER=${1:-30}
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -38,7 +39,7 @@ $CC $FLAGS -o "$BUILD/fuzz_pairs" "$ROOT/fuzz/fuzz_pairs.c" $CLIOBJ $LIBOBJ $LIB
 t1=$(date +%s)
 echo "build: $((t1 - t0)) s"
 status=0
-for name in queries deck pairs; do
+for name in ${PROX_FUZZ_ONLY:-queries deck pairs}; do
     work="$BUILD/corpus/$name"
     crashes="$BUILD/crashes/$name"
     mkdir -p "$work" "$crashes"

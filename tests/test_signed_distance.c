@@ -291,7 +291,7 @@ static void test_support_generic_shapes(void **state)
     assert_near(p.y, -1, 0);
     assert_near(p.z, 1, 0);
     prox_shape badk = r1;
-    badk.kind = (prox_shape_kind)7;
+    badk.kind = PROX_SHAPE_KIND_COUNT_; /* the first value past the last kind */
     assert_int_equal(prox_shape_signed_distance_support(&r1, &badk).status, PROX_EINVAL_SHAPE_KIND);
 }
 

@@ -1,13 +1,16 @@
 /// @file deck.h
-/// Reader for MCNP input decks: the solid bodies of the surface block (macrobodies RCC, BOX, RPP,
-/// SPH and the sphere surfaces SO, S, SX, SY, SZ) placed in the deck's global frame through the
-/// TRn / *TRn cards of the data block. Every surface card ends up as a body, an error (malformed
-/// card, with line and reason) or an unsupported entry (card mnemonic and line): none is dropped.
-/// Rules followed (MCNP6 manual, Ch. 2-3): case-insensitive; `c` comment cards (c in columns 1-5
+/// Reader for MCNP input decks: the solid bodies of the surface block (the ten macrobodies RCC, BOX,
+/// RPP, SPH, TRC, REC, ELL, RHP/HEX, WED, ARB in every card form, and the sphere surfaces SO, S, SX,
+/// SY, SZ) placed in the deck's global frame through the TRn / *TRn cards of the data block. Every
+/// surface card ends up as a body, an error (malformed card, with line and reason) or an unsupported
+/// entry (card mnemonic and line): none is dropped. docs/deck.md lists the rules and their sources.
+/// Rules followed (MCNP6 manual, Ch. 3): case-insensitive; `c` comment cards (c in columns 1-5
 /// followed by a blank, or alone); `$` end-of-line comments; continuation by five leading blanks or
-/// a trailing `&`; an optional `message:` block; blank-line block delimiters; numbers with E/D
-/// exponents; the shorthands nR, nI, xM, nILOG (nJ and Fortran exponents without E are errors);
-/// READ FILE=name cards (followed by prox_deck_read_file only; see there).
+/// a trailing `&`; columns 1-128 of a line (text beyond is listed as unsupported); an optional
+/// `message:` block; blank-line block delimiters; numbers with E/D exponents; the shorthands nR, nI,
+/// xM, nILOG (nJ and Fortran exponents without E are errors); READ FILE=name cards with ECHO, NOECHO,
+/// ENCODE (followed by prox_deck_read_file only; see there; DECODE is listed as unsupported).
+/// The cell model of a deck (cells, all surface kinds, universes) is read by cells.h.
 #ifndef PROX_DECK_H
 #define PROX_DECK_H
 
@@ -22,7 +25,7 @@
 typedef struct prox_deck_body {
     long surface;      ///< surface number as written (without a * or + boundary prefix)
     int line;          ///< 1-based line of the card's first line
-    char card[8];      ///< mnemonic, upper case: "RCC", "BOX", "RPP", "SPH", "SO", "S", "SX", "SY", "SZ"
+    char card[8];      ///< mnemonic, upper case as written ("RCC", ..., "RHP" or "HEX", "SO", "SX", ...)
     long tr;           ///< transformation number applied (0 for none)
     prox_shape shape;  ///< the solid in the global frame (an RPP under a rotation becomes a BOX)
 } prox_deck_body;

@@ -26,5 +26,6 @@
 #include "primitives.h"
 #include "scene.h"
 #include "deck.h"
+#include "cells.h"
 
 #endif

@@ -1,8 +1,11 @@
 /// @file query.h
-/// One entry point for every pair of MCNP macrobodies (RCC, BOX, RPP, SPH): intersection verdict,
-/// exact distance and proximal points, signed distance (penetration depth), containment, relation and
-/// repositioning. The generic prox_shape_* functions dispatch to the specialised pair solvers of
-/// pairs.h (an RPP is treated as the BOX it describes), so callers never switch on pair types.
+/// One entry point for every pair of the ten MCNP macrobodies (RCC, BOX, RPP, SPH, TRC, REC, ELL,
+/// RHP/HEX, WED, ARB): intersection verdict, exact distance and proximal points, signed distance
+/// (penetration depth), containment, relation and repositioning. The generic prox_shape_* functions
+/// dispatch to the cheapest exact solver of each pair (docs/algorithms/dispatch.md): the specialised
+/// pair solvers of pairs.h among RCC, BOX, RPP (as the BOX it describes) and SPH; a sphere against
+/// anything by the exact point-to-body distance; polytope pairs by features; every other pair by the
+/// certified support-function method. Callers never switch on pair types.
 /// Sources: the LANL TRX report LA-UR-13-26757 (Set 1 containment, Set 2 intersection, the
 /// "prescription to reposition"), generalised and corrected; see docs/errata-trx.md and
 /// docs/algorithms/boxes_spheres.md.

@@ -122,7 +122,8 @@ typedef struct prox_signed_result {
 typedef struct prox_contain_result {
     prox_status status;
     int inside;       ///< 1 when A lies in B (clearance >= -tol)
-    double clearance; ///< min over A of the distance to B's boundary (>= 0 inside, < 0 when A sticks out)
+    double clearance; ///< nested: min over A of the distance to B's boundary (exact); when A sticks out, a
+                      ///< negative number whose magnitude is at most how far A sticks out
 } prox_contain_result;
 
 /// How two solids lie relative to each other.

@@ -4,9 +4,10 @@
 /// Every pair question runs a ladder of tests from cheapest to dearest and stops at the first rung
 /// that decides it: axis-aligned boxes, bounding spheres, support-function bounds along the line of
 /// centres (a lower and an upper bound on the distance), the separating-axis verdict, and only then
-/// the exact solver the mode asks for (query.h). A scene adds a sort-and-sweep broad phase so that
-/// pairs whose boxes lie farther apart than the question cares about are never looked at one by one.
-/// See docs/scene.md.
+/// the exact solver the mode asks for (query.h). A scene adds a broad phase (a bounding volume
+/// hierarchy over the bodies' boxes) so that pairs whose boxes lie farther apart than the question
+/// cares about are never looked at one by one: its work grows with the bodies and the pairs near
+/// enough to test, not with the square of the bodies. See docs/scene.md and docs/perf/scene_scaling.md.
 #ifndef PROX_SCENE_H
 #define PROX_SCENE_H
 
@@ -20,9 +21,13 @@ typedef struct prox_aabb {
     prox_vec3 lo, hi;
 } prox_aabb;
 
-/// The tight axis-aligned box of a valid shape, widened by a few ulps so that it always contains it.
+/// The tight axis-aligned box of a valid shape of any of the ten kinds (for TRC, REC, ELL, RHP, WED
+/// and ARB: the support function along +-x, +-y, +-z), widened by a few ulps so that it always
+/// contains the solid.
 PROX_API prox_aabb prox_shape_aabb(const prox_shape *s);
-/// A bounding sphere of a valid shape: centre of symmetry and the distance to its farthest point.
+/// A bounding sphere of a valid shape: the centre of symmetry (RCC, BOX, RPP, SPH) or the body's
+/// reference point (the other kinds: middle of the axis, centre, corners' centroid) and the distance
+/// to its farthest point, widened so that rounding cannot make it miss the solid.
 PROX_API prox_sph prox_shape_bounding_sphere(const prox_shape *s);
 
 /// How much a pair query computes. Each mode computes what the previous ones do, plus more.
@@ -79,7 +84,7 @@ typedef struct prox_scene prox_scene;
 typedef struct prox_scene_stats {
     size_t bodies;
     size_t naive_pairs;     ///< n (n - 1) / 2
-    size_t candidates;      ///< pairs whose bounding boxes came within the threshold (sweep output)
+    size_t candidates;      ///< pairs whose bounding boxes came within the threshold (broad phase output)
     size_t bound_rejects;   ///< candidates dropped by bounding spheres
     size_t support_decided; ///< decided by support-function bounds
     size_t tests;           ///< decided by the separating-axis verdict
@@ -111,7 +116,9 @@ PROX_API prox_status prox_scene_add(prox_scene *s, const prox_shape *shape);
 PROX_API size_t prox_scene_count(const prox_scene *s);
 /// The body at index i (NULL when out of range).
 PROX_API const prox_shape *prox_scene_body(const prox_scene *s, size_t i);
-/// Threads used for the exact stage of scene queries (default 1; <= 0: OpenMP's default).
+/// Threads used by scene queries, for the broad phase and the ladder alike (POSIX threads; default 1;
+/// <= 0: one per processor, OpenMP's default when the library is built with OpenMP). The answers do
+/// not depend on the thread count.
 PROX_API void prox_scene_set_threads(prox_scene *s, int threads);
 
 /// Every pair within `clearance` (>= 0; INFINITY: every pair), evaluated in `mode`:

@@ -24,6 +24,14 @@ typedef enum prox_status {
     PROX_ENUMERIC,            ///< an internal numerical method failed (e.g. GSL's QR did not converge)
     PROX_ENOMEM,              ///< allocation failed
     PROX_EUNSUPPORTED,        ///< the query is not implemented for this pair of shapes
+    PROX_EINVAL_TRC,          ///< TRC radii negative, both zero or equal
+    PROX_EINVAL_REC_ORTHO,    ///< REC axis and semi-axis vectors not mutually orthogonal
+    PROX_EINVAL_ELL,          ///< ELL foci form: major radius not longer than half the focal distance
+    PROX_EINVAL_RHP,          ///< RHP facet vectors not perpendicular to the height or not a convex hexagon
+    PROX_EINVAL_WED,          ///< WED vectors degenerate (parallel sides, height not perpendicular)
+    PROX_EINVAL_ARB_FACE,     ///< ARB face number names a missing, repeated or unused corner
+    PROX_EINVAL_ARB_PLANAR,   ///< ARB face corners not coplanar
+    PROX_EINVAL_ARB_CONVEX,   ///< ARB faces do not bound a convex closed body
     PROX_STATUS_COUNT_
 } prox_status;
 

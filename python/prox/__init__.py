@@ -1,4 +1,5 @@
-"""prox: exact proximity queries between MCNP macrobodies (RCC, BOX, RPP, SPH).
+"""prox: exact proximity queries between MCNP macrobodies (RCC, BOX, RPP, SPH, TRC, REC, ELL,
+RHP/HEX, WED, ARB).
 
     import prox, numpy as np
     a = prox.RCC([0, 0, 0], [0, 0, 5], 2)
@@ -21,7 +22,7 @@ from ._query import (
     status_str,
     test,
 )
-from ._shapes import BOX, RCC, RPP, SPH
+from ._shapes import ARB, BOX, ELL, HEX, RCC, REC, RHP, RPP, SPH, TRC, WED
 
 __version__ = _prox.version()
 
@@ -29,7 +30,7 @@ __version__ = _prox.version()
 globals().update({k: getattr(_prox, k) for k in dir(_prox) if k.startswith("STATUS_")})
 
 __all__ = [
-    "RCC", "BOX", "RPP", "SPH",
+    "RCC", "BOX", "RPP", "SPH", "TRC", "REC", "ELL", "RHP", "HEX", "WED", "ARB",
     "distance", "signed_distance", "test", "query", "check_deck", "status_str",
     "DistanceResult", "SignedResult", "TestResult", "ProxError",
     "__version__",

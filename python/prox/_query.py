@@ -93,11 +93,30 @@ def _threads(threads):
     return t
 
 
+def _card_faults(out, a, b):
+    """Rows with a shape made from an invalid card form (a _fault status) report that shape's status as
+    the library reports an invalid shape: A's status before B's, NaN numbers, no verdict."""
+    n = len(out)
+    sa = np.broadcast_to(a.validate(), (n,))
+    sb = np.broadcast_to(b.validate(), (n,))
+    rows = np.zeros(n, dtype=bool)
+    for s, side in ((sa, a), (sb, b)):
+        if side._fault is not None:
+            rows |= np.broadcast_to(side._fault != 0, (n,))
+    out.status[rows] = np.where(sa != 0, sa, sb)[rows]
+    for name in ("distance", "sd", "p1", "p2", "normal"):
+        if hasattr(out, name):
+            getattr(out, name)[rows] = np.nan
+    for name in ("intersect", "certified"):
+        if hasattr(out, name):
+            getattr(out, name)[rows] = False
+
+
 def _run(a, b, mode, method, errors, threads):
     """One batch through the extension; the result object of the mode."""
     for side, s in (("a", a), ("b", b)):
         if not isinstance(s, _Shape):
-            raise TypeError(f"{side} must be a prox shape (RCC, BOX, RPP, SPH), got {type(s).__name__}")
+            raise TypeError(f"{side} must be a prox shape (RCC, BOX, RPP, SPH, TRC, REC, ELL, RHP, WED, ARB), got {type(s).__name__}")
     if mode not in _MODES:
         raise ValueError(f"unknown mode {mode!r}: expected one of {', '.join(map(repr, _MODES))}")
     if errors not in _ERRORS:
@@ -109,6 +128,8 @@ def _run(a, b, mode, method, errors, threads):
         raise ValueError(f"method {method!r} applies to cylinder pairs (RCC, RCC) only; other pairs take 'fast'")
     code = _MODES[mode]
     out = _RESULTS[code](*_prox.query(a.kind, a._rows, b.kind, b._rows, code, m, _threads(threads)))
+    if a._fault is not None or b._fault is not None:
+        _card_faults(out, a, b)
     if errors == "raise":
         bad = np.flatnonzero(out.status)
         if bad.size:
@@ -140,14 +161,19 @@ def query(a, b, mode="distance", method="fast", errors="status", threads=None):
     return _run(a, b, mode, method, errors, threads)
 
 
-def check_deck(path, *, clearance=0.0, all=False):
+def check_deck(path, *, clearance=0.0, all=False, bodies=False, resolution=0.0, strict=False, threads=0):
     """The report of `prox check DECK --json` for the deck at path, parsed (a dict).
 
-    clearance and all are the CLI's --clearance D and --all."""
+    The keywords are the CLI's options: bodies --bodies (the body-level report; clearance > 0 and all
+    imply it, as does a deck without cells), clearance --clearance D, all --all, resolution
+    --resolution R (0: the default), strict --strict, threads --threads N (0: the default)."""
     path = os.fspath(path)
     if not os.path.isfile(path):
         raise FileNotFoundError(f"no such deck: {path!r}")
-    report, _code, st = _prox.check_deck(path, float(clearance), bool(all))
+    if isinstance(threads, bool):
+        raise TypeError("threads must be an int")
+    args = (float(clearance), bool(all), bool(bodies), float(resolution), bool(strict), operator.index(threads))
+    report, _code, st = _prox.check_deck(path, *args)
     if report is None:
         raise ProxError(f"{path}: {_prox.status_str(st)}", status=st)
     return json.loads(report)

@@ -27,8 +27,10 @@
 enum { MODE_DISTANCE = 0, MODE_SIGNED = 1, MODE_TEST = 2 };
 
 /* Doubles per row of each shape kind (indexed by prox_shape_kind): RCC base, axis, radius; BOX corner,
- * three edges; RPP xmin xmax ymin ymax zmin zmax; SPH centre, radius. */
-static const npy_intp row_width[4] = {7, 12, 6, 4};
+ * three edges; RPP xmin xmax ymin ymax zmin zmax; SPH centre, radius; TRC base, axis, r1, r2; REC base,
+ * axis, a1, a2; ELL centre, axis, radius; RHP base, axis, r1, r2, r3; WED vertex, v1, v2, v3; ARB eight
+ * corners and six face numbers. */
+static const npy_intp row_width[PROX_SHAPE_KIND_COUNT_] = {7, 12, 6, 4, 8, 12, 7, 15, 12, 30};
 
 /* Rows handed to a thread at a time: small enough to balance rows of unequal cost, large enough that
  * the shared counter is touched rarely. */
@@ -73,6 +75,19 @@ static prox_shape shape_at(int kind, const double *v)
     case PROX_SHAPE_RPP: {
         prox_rpp r = {v[0], v[1], v[2], v[3], v[4], v[5]};
         return prox_shape_from_rpp(r);
+    }
+    case PROX_SHAPE_TRC: return prox_shape_from_trc((prox_trc){v3_at(v), v3_at(v + 3), v[6], v[7]});
+    case PROX_SHAPE_REC: return prox_shape_from_rec((prox_rec){v3_at(v), v3_at(v + 3), v3_at(v + 6), v3_at(v + 9)});
+    case PROX_SHAPE_ELL: return prox_shape_from_ell((prox_ell){v3_at(v), v3_at(v + 3), v[6]});
+    case PROX_SHAPE_RHP:
+        return prox_shape_from_rhp((prox_rhp){v3_at(v), v3_at(v + 3), {v3_at(v + 6), v3_at(v + 9), v3_at(v + 12)}});
+    case PROX_SHAPE_WED: return prox_shape_from_wed((prox_wed){v3_at(v), v3_at(v + 3), v3_at(v + 6), v3_at(v + 9)});
+    case PROX_SHAPE_ARB: {
+        prox_arb a;
+        for (int k = 0; k < 8; ++k) a.corner[k] = v3_at(v + 3 * k);
+        for (int k = 0; k < 6; ++k) /* a face number that is not a small whole number is no face */
+            a.face[k] = v[24 + k] >= 0.0 && v[24 + k] <= 9999.0 && v[24 + k] == floor(v[24 + k]) ? (int)v[24 + k] : -1;
+        return prox_shape_from_arb(a);
     }
     default: {
         prox_sph s = {v3_at(v), v[3]};
@@ -220,7 +235,7 @@ static void run_batch(batch *B, int threads)
  * ValueError. */
 static PyArrayObject *side_array(PyObject *obj, int kind, const char *name)
 {
-    if (kind < PROX_SHAPE_RCC || kind > PROX_SHAPE_SPH) {
+    if (kind < PROX_SHAPE_RCC || kind >= PROX_SHAPE_KIND_COUNT_) {
         PyErr_Format(PyExc_ValueError, "shape %s: unknown shape kind %d", name, kind);
         return NULL;
     }
@@ -331,17 +346,48 @@ done:
     return out;
 }
 
-PyDoc_STRVAR(check_doc, "check_deck(path, clearance, all) -> (report or None, exit status, prox status)\n\n"
-                        "The JSON report of `prox check DECK --json` (src/cli/check.c), as text.");
+PyDoc_STRVAR(validate_doc, "validate(kind, rows) -> int32 array\n\n"
+                           "prox_shape_validate of each row: the status a query would report for that shape.");
+
+static PyObject *py_validate(PyObject *self, PyObject *args)
+{
+    (void)self;
+    PyObject *obj;
+    int kind;
+    if (!PyArg_ParseTuple(args, "iO", &kind, &obj)) return NULL;
+    PyArrayObject *arr = side_array(obj, kind, "rows");
+    if (!arr) return NULL;
+    npy_intp n = PyArray_DIM(arr, 0);
+    PyObject *out = new_array(1, n, NPY_INT32);
+    if (out) {
+        const double *v = PyArray_DATA(arr);
+        int32_t *st = PyArray_DATA((PyArrayObject *)out);
+        for (npy_intp i = 0; i < n; ++i) {
+            prox_shape s = shape_at(kind, v + (size_t)i * (size_t)row_width[kind]);
+            st[i] = (int32_t)prox_shape_validate(&s);
+        }
+    }
+    Py_DECREF(arr);
+    return out;
+}
+
+PyDoc_STRVAR(check_doc, "check_deck(path, clearance, all, bodies, resolution, strict, threads) -> (report or None,\n"
+                        "exit status, prox status)\n\n"
+                        "The JSON report of `prox check DECK --json` with those options (src/cli/check.c), as text.");
 
 static PyObject *py_check_deck(PyObject *self, PyObject *args)
 {
     (void)self;
     const char *path;
-    double clearance;
-    int all;
-    if (!PyArg_ParseTuple(args, "sdp", &path, &clearance, &all)) return NULL;
+    double clearance, resolution;
+    int all, bodies, strict, threads;
+    if (!PyArg_ParseTuple(args, "sdppdpi", &path, &clearance, &all, &bodies, &resolution, &strict, &threads)) return NULL;
     if (!(clearance >= 0.0) || isinf(clearance)) return PyErr_Format(PyExc_ValueError, "clearance must be finite and >= 0");
+    if (!(resolution >= 0.0) || isinf(resolution))
+        return PyErr_Format(PyExc_ValueError, "resolution must be finite and >= 0 (0: the default)");
+    if (threads < 0) return PyErr_Format(PyExc_ValueError, "threads must be >= 0 (0: the default)");
+    prox_check_args opts = {.path = path, .clearance = clearance, .all = all, .json = 1, .bodies = bodies,
+                            .strict = strict, .resolution = resolution, .threads = threads};
     char *text = NULL;
     size_t len = 0;
     FILE *f = open_memstream(&text, &len);
@@ -349,7 +395,7 @@ static PyObject *py_check_deck(PyObject *self, PyObject *args)
     prox_status st = PROX_OK;
     int code;
     Py_BEGIN_ALLOW_THREADS
-    code = prox_check_report(path, clearance, all, 1, f, &st);
+    code = prox_check_run(&opts, f, &st);
     Py_END_ALLOW_THREADS
     fclose(f);
     PyObject *report = Py_None;
@@ -387,6 +433,7 @@ static PyObject *py_method_code(PyObject *self, PyObject *arg)
 static PyMethodDef methods[] = {
     {"query", py_query, METH_VARARGS, query_doc},
     {"check_deck", py_check_deck, METH_VARARGS, check_doc},
+    {"validate", py_validate, METH_VARARGS, validate_doc},
     {"version", py_version, METH_NOARGS, "prox_version() of the C library."},
     {"status_str", py_status_str, METH_O, "prox_status_str(code): the text of a status code."},
     {"method_code", py_method_code, METH_O, "The prox_method value of a method name (ValueError if unknown)."},
@@ -405,8 +452,13 @@ static int add_status_codes(PyObject *m)
         {"EINVAL_BOX_ORTHO", PROX_EINVAL_BOX_ORTHO}, {"EINVAL_RPP_BOUNDS", PROX_EINVAL_RPP_BOUNDS},
         {"EINVAL_ARG", PROX_EINVAL_ARG}, {"EINVAL_RANGE", PROX_EINVAL_RANGE},
         {"EINVAL_SHAPE_KIND", PROX_EINVAL_SHAPE_KIND}, {"ENUMERIC", PROX_ENUMERIC}, {"ENOMEM", PROX_ENOMEM},
-        {"EUNSUPPORTED", PROX_EUNSUPPORTED},
+        {"EUNSUPPORTED", PROX_EUNSUPPORTED}, {"EINVAL_TRC", PROX_EINVAL_TRC},
+        {"EINVAL_REC_ORTHO", PROX_EINVAL_REC_ORTHO}, {"EINVAL_ELL", PROX_EINVAL_ELL},
+        {"EINVAL_RHP", PROX_EINVAL_RHP}, {"EINVAL_WED", PROX_EINVAL_WED},
+        {"EINVAL_ARB_FACE", PROX_EINVAL_ARB_FACE}, {"EINVAL_ARB_PLANAR", PROX_EINVAL_ARB_PLANAR},
+        {"EINVAL_ARB_CONVEX", PROX_EINVAL_ARB_CONVEX},
     };
+    _Static_assert(sizeof codes / sizeof codes[0] == PROX_STATUS_COUNT_, "every prox_status has its constant");
     for (size_t i = 0; i < sizeof codes / sizeof codes[0]; ++i) {
         char name[64];
         snprintf(name, sizeof name, "STATUS_%s", codes[i].name);

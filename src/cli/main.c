@@ -11,7 +11,10 @@ static void usage(FILE *f)
     fprintf(f, "usage: prox <command> [options]\n"
                "commands:\n"
                "  pairs     cylinder pairs on stdin (14 numbers a line) -> distance and proximal points\n"
-               "  check     MCNP deck -> crossing, touching, nested and close bodies (prox check DECK --help)\n"
+               "  check     MCNP deck -> overlapping cells, gaps (--bodies: crossing and nested bodies)\n"
+               "            (prox check DECK --help)\n"
+               "  plot      MCNP deck -> PNG of the cells on a slice, overlaps and gaps marked\n"
+               "            (prox plot DECK --slice z=10 -o slice.png; prox plot --help)\n"
                "  help      this text\n"
                "  --version the version of prox\n");
 }
@@ -29,6 +32,7 @@ int main(int argc, char **argv)
     }
     if (strcmp(argv[1], "pairs") == 0) return prox_cli_pairs(argc - 1, argv + 1);
     if (strcmp(argv[1], "check") == 0) return prox_cli_check(argc - 1, argv + 1);
+    if (strcmp(argv[1], "plot") == 0) return prox_cli_plot(argc - 1, argv + 1);
     if (strcmp(argv[1], "help") == 0 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
         usage(stdout);
         return 0;

@@ -46,6 +46,29 @@ prox_body prox_body_make(const prox_shape *s)
         b.r = s->u.sph.radius;
         b.size = 2.0 * b.r;
         break;
+    case PROX_SHAPE_RHP:
+    case PROX_SHAPE_WED:
+    case PROX_SHAPE_ARB:
+        b.kind = PROX_BODY_POLY;
+        b.c = prox_polytope_make(s, &b.x.poly);
+        b.size = b.x.poly.size;
+        break;
+    case PROX_SHAPE_TRC:
+        b.kind = PROX_BODY_CONE;
+        b.c = prox_cone_make(&s->u.trc, &b.x.cone);
+        b.size = fmax(2.0 * b.x.cone.hh, 2.0 * fmax(b.x.cone.r1, b.x.cone.r2));
+        break;
+    case PROX_SHAPE_REC:
+        b.kind = PROX_BODY_ECYL;
+        b.c = prox_ecyl_make(&s->u.rec, &b.x.ecyl);
+        b.size = fmax(2.0 * b.x.ecyl.hh, 2.0 * b.x.ecyl.a1);
+        break;
+    case PROX_SHAPE_ELL:
+        b.kind = PROX_BODY_ELL;
+        b.c = prox_ellb_make(&s->u.ell, &b.x.ell);
+        b.size = 2.0 * fmax(b.x.ell.a, b.x.ell.b);
+        break;
+    default: break;
     }
     return b;
 }
@@ -59,10 +82,14 @@ prox_vec3 prox_body_pc(const prox_body *b, prox_vec3 d)
         for (int k = 0; k < 3; ++k) l[k] = b->box.h[k] * sgn(prox_v3_dot(d, b->box.a[k]));
         return prox_bframe_point(&b->box, l);
     }
-    default: {
+    case PROX_BODY_SPH: {
         double n = prox_v3_norm(d);
         return n > 0.0 ? prox_v3_scale(d, b->r / n) : prox_v3(0, 0, 0);
     }
+    case PROX_BODY_POLY: return prox_polytope_pc(&b->x.poly, d);
+    case PROX_BODY_CONE: return prox_cone_pc(&b->x.cone, d);
+    case PROX_BODY_ECYL: return prox_ecyl_pc(&b->x.ecyl, d);
+    default: return prox_ellb_pc(&b->x.ell, d);
     }
 }
 
@@ -78,7 +105,11 @@ int prox_body_contains(const prox_body *b, prox_vec3 x, double tol)
             if (fabs(l[k]) > b->box.h[k] + tol) return 0;
         return 1;
     }
-    default: return prox_v3_norm(y) <= b->r + tol;
+    case PROX_BODY_SPH: return prox_v3_norm(y) <= b->r + tol;
+    case PROX_BODY_POLY: return prox_polytope_contains(&b->x.poly, y, tol);
+    case PROX_BODY_CONE: return prox_cone_contains(&b->x.cone, y, tol);
+    case PROX_BODY_ECYL: return prox_ecyl_contains(&b->x.ecyl, y, tol);
+    default: return prox_ellb_contains(&b->x.ell, y, tol);
     }
 }
 
@@ -88,13 +119,90 @@ prox_vec3 prox_body_closest(const prox_body *b, prox_vec3 x)
     switch (b->kind) {
     case PROX_BODY_CYL: y = prox_cyl_closest(&b->cyl, y); break;
     case PROX_BODY_BOX: y = prox_bframe_closest(&b->box, y, NULL); break;
-    default: {
+    case PROX_BODY_SPH: {
         double n = prox_v3_norm(y);
         if (n > b->r) y = prox_v3_scale(y, b->r / n);
         break;
     }
+    case PROX_BODY_POLY: y = prox_polytope_closest(&b->x.poly, y); break;
+    case PROX_BODY_CONE: y = prox_cone_closest(&b->x.cone, y); break;
+    case PROX_BODY_ECYL: y = prox_ecyl_closest(&b->x.ecyl, y); break;
+    default: y = prox_ellb_closest(&b->x.ell, y); break;
     }
     return prox_v3_add(b->c, y);
+}
+
+/* A unit vector perpendicular to the unit vector w. */
+static prox_vec3 any_perp(prox_vec3 w)
+{
+    prox_vec3 a = fabs(w.x) < 0.6 ? prox_v3(1, 0, 0) : prox_v3(0, 1, 0);
+    prox_vec3 p = prox_v3_mad(a, -prox_v3_dot(a, w), w);
+    return prox_v3_scale(p, 1.0 / prox_v3_norm(p));
+}
+
+/* Boundary of a cylinder from inside: the nearer of the side (r - rho) and the nearer cap (hh - |t|). */
+static double cyl_boundary(const prox_cyl *k, prox_vec3 y, prox_vec3 *q)
+{
+    prox_vec3 x = prox_cyl_closest(k, y);
+    prox_vec3 dx = prox_v3_sub(y, x);
+    double out = prox_v3_norm(dx);
+    if (out > 0.0) {
+        *q = x;
+        return out;
+    }
+    double t = prox_v3_dot(y, k->w);
+    prox_vec3 perp = prox_v3_mad(y, -t, k->w);
+    double rho = prox_v3_norm(perp);
+    double side = k->r - rho, cap = k->hh - fabs(t);
+    if (side <= cap) {
+        prox_vec3 u = rho > 0.0 ? prox_v3_scale(perp, 1.0 / rho) : any_perp(k->w);
+        *q = prox_v3_mad(prox_v3_scale(k->w, t), k->r, u);
+        return -side;
+    }
+    *q = prox_v3_mad(perp, t >= 0.0 ? k->hh : -k->hh, k->w);
+    return -cap;
+}
+
+/* Boundary of a box from inside: the nearest face. */
+static double box_boundary(const prox_bframe *f, prox_vec3 y, prox_vec3 *q)
+{
+    prox_vec3 x = prox_bframe_closest(f, y, NULL);
+    double out = prox_v3_norm(prox_v3_sub(y, x));
+    if (out > 0.0) {
+        *q = x;
+        return out;
+    }
+    double l[3];
+    prox_bframe_local(f, y, l);
+    int kmin = 0;
+    double gap = f->h[0] - fabs(l[0]);
+    for (int k = 1; k < 3; ++k)
+        if (f->h[k] - fabs(l[k]) < gap) gap = f->h[k] - fabs(l[k]), kmin = k;
+    l[kmin] = l[kmin] >= 0.0 ? f->h[kmin] : -f->h[kmin];
+    *q = prox_bframe_point(f, l);
+    return -gap;
+}
+
+double prox_body_boundary(const prox_body *b, prox_vec3 x, prox_vec3 *q)
+{
+    prox_vec3 y = prox_v3_sub(x, b->c), qc;
+    double s;
+    switch (b->kind) {
+    case PROX_BODY_CYL: s = cyl_boundary(&b->cyl, y, &qc); break;
+    case PROX_BODY_BOX: s = box_boundary(&b->box, y, &qc); break;
+    case PROX_BODY_SPH: {
+        double n = prox_v3_norm(y);
+        qc = n > 0.0 ? prox_v3_scale(y, b->r / n) : prox_v3(b->r, 0, 0);
+        s = n - b->r;
+        break;
+    }
+    case PROX_BODY_POLY: s = prox_polytope_boundary(&b->x.poly, y, &qc); break;
+    case PROX_BODY_CONE: s = prox_cone_boundary(&b->x.cone, y, &qc); break;
+    case PROX_BODY_ECYL: s = prox_ecyl_boundary(&b->x.ecyl, y, &qc); break;
+    default: s = prox_ellb_boundary(&b->x.ell, y, &qc); break;
+    }
+    *q = prox_v3_add(b->c, qc);
+    return s;
 }
 
 prox_body prox_body_scaled(const prox_body *b, double f)
@@ -104,6 +212,17 @@ prox_body prox_body_scaled(const prox_body *b, double f)
     s.cyl = prox_cyl_scaled(&b->cyl, f);
     for (int k = 0; k < 3; ++k) s.box.h[k] *= f;
     s.r *= f;
+    switch (b->kind) {
+    case PROX_BODY_POLY:
+        for (int i = 0; i < b->x.poly.nv; ++i) s.x.poly.v[i] = prox_v3_scale(b->x.poly.v[i], f);
+        for (int i = 0; i < b->x.poly.nf; ++i) s.x.poly.d[i] *= f;
+        s.x.poly.size *= f;
+        break;
+    case PROX_BODY_CONE: s.x.cone.hh *= f, s.x.cone.r1 *= f, s.x.cone.r2 *= f; break;
+    case PROX_BODY_ECYL: s.x.ecyl.hh *= f, s.x.ecyl.a1 *= f, s.x.ecyl.a2 *= f; break;
+    case PROX_BODY_ELL: s.x.ell.a *= f, s.x.ell.b *= f; break;
+    default: break;
+    }
     s.size *= f;
     return s;
 }

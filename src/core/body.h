@@ -11,10 +11,23 @@
 #define PROX_CORE_BODY_H
 
 #include "core/box.h"
+#include "core/curved.h"
 #include "core/cyl.h"
+#include "core/polytope.h"
 #include "prox/shapes.h"
 
-typedef enum prox_body_kind { PROX_BODY_CYL = 0, PROX_BODY_BOX = 1, PROX_BODY_SPH = 2 } prox_body_kind;
+/* CYL, BOX and SPH are centrally symmetric about c (hc even); the macrobodies added after them are
+ * kept relative to a reference point c of their own (core/polytope.h, core/curved.h) and their hc
+ * need not be even: RHP, WED, ARB are POLY; TRC is CONE; REC is ECYL; ELL is ELL. */
+typedef enum prox_body_kind {
+    PROX_BODY_CYL = 0,
+    PROX_BODY_BOX = 1,
+    PROX_BODY_SPH = 2,
+    PROX_BODY_POLY = 3,
+    PROX_BODY_CONE = 4,
+    PROX_BODY_ECYL = 5,
+    PROX_BODY_ELL = 6
+} prox_body_kind;
 
 typedef struct prox_body {
     prox_body_kind kind;
@@ -23,7 +36,17 @@ typedef struct prox_body {
     prox_bframe box; /* PROX_BODY_BOX: the box relative to c (box.m = 0) */
     double r;        /* PROX_BODY_SPH: radius */
     double size;     /* largest dimension (tolerance scale): height or diameter, largest edge */
+    union {          /* the added kinds, relative to c */
+        prox_polytope poly;
+        prox_cone cone;
+        prox_ecyl ecyl;
+        prox_ellb ell;
+    } x;
 } prox_body;
+
+/* 1 when the body is centrally symmetric about c (hc(-d) = hc(d)): what the support engine's
+ * ridge search of the cylinder and box pairs assumes. */
+static inline int prox_body_symmetric(const prox_body *b) { return b->kind <= PROX_BODY_SPH; }
 
 /* The body of a valid shape (validate first: this is the hot path of the generic queries). */
 prox_body prox_body_make(const prox_shape *s);
@@ -34,7 +57,11 @@ static inline double prox_body_hc(const prox_body *b, prox_vec3 d)
     switch (b->kind) {
     case PROX_BODY_CYL: return prox_cyl_hc(&b->cyl, d);
     case PROX_BODY_BOX: return prox_bframe_support(&b->box, d); /* box.m = 0: the centred part alone */
-    default: return b->r * prox_v3_norm(d);
+    case PROX_BODY_SPH: return b->r * prox_v3_norm(d);
+    case PROX_BODY_POLY: return prox_polytope_hc(&b->x.poly, d);
+    case PROX_BODY_CONE: return prox_cone_hc(&b->x.cone, d);
+    case PROX_BODY_ECYL: return prox_ecyl_hc(&b->x.ecyl, d);
+    default: return prox_ellb_hc(&b->x.ell, d);
     }
 }
 
@@ -84,5 +111,9 @@ int prox_body_contains(const prox_body *b, prox_vec3 x, double tol);
 
 /* Closest point of the solid body to x (x itself when inside), absolute coordinates. */
 prox_vec3 prox_body_closest(const prox_body *b, prox_vec3 x);
+
+/* Signed distance from x to the body's boundary (< 0 inside) and the closest boundary point *q,
+ * absolute coordinates: the exact sphere-against-anything query is this minus the radius. */
+double prox_body_boundary(const prox_body *b, prox_vec3 x, prox_vec3 *q);
 
 #endif

@@ -96,6 +96,13 @@ PROX_API prox_status prox_shape_validate(const prox_shape *s)
     case PROX_SHAPE_BOX: return prox_box_validate(&s->u.box);
     case PROX_SHAPE_RPP: return prox_rpp_validate(&s->u.rpp);
     case PROX_SHAPE_SPH: return prox_sph_validate(&s->u.sph);
+    case PROX_SHAPE_TRC: return prox_trc_validate(&s->u.trc);
+    case PROX_SHAPE_REC: return prox_rec_validate(&s->u.rec);
+    case PROX_SHAPE_ELL: return prox_ell_validate(&s->u.ell);
+    case PROX_SHAPE_RHP: return prox_rhp_validate(&s->u.rhp);
+    case PROX_SHAPE_WED: return prox_wed_validate(&s->u.wed);
+    case PROX_SHAPE_ARB: return prox_arb_validate(&s->u.arb);
+    default: break;
     }
     return PROX_EINVAL_SHAPE_KIND;
 }
@@ -129,4 +136,24 @@ PROX_API prox_shape prox_shape_from_sph(prox_sph s0)
 {
     prox_shape s = {.kind = PROX_SHAPE_SPH, .u.sph = s0};
     return s;
+}
+
+#define SHAPE_FROM(name, type, kind_tag)                          \
+    PROX_API prox_shape prox_shape_from_##name(type v)            \
+    {                                                             \
+        prox_shape s = {.kind = kind_tag, .u.name = v};           \
+        return s;                                                 \
+    }
+SHAPE_FROM(trc, prox_trc, PROX_SHAPE_TRC)
+SHAPE_FROM(rec, prox_rec, PROX_SHAPE_REC)
+SHAPE_FROM(ell, prox_ell, PROX_SHAPE_ELL)
+SHAPE_FROM(rhp, prox_rhp, PROX_SHAPE_RHP)
+SHAPE_FROM(wed, prox_wed, PROX_SHAPE_WED)
+SHAPE_FROM(arb, prox_arb, PROX_SHAPE_ARB)
+
+PROX_API const char *prox_shape_kind_name(prox_shape_kind k)
+{
+    static const char *const names[PROX_SHAPE_KIND_COUNT_] = {"RCC", "BOX", "RPP", "SPH", "TRC",
+                                                              "REC", "ELL", "RHP", "WED", "ARB"};
+    return (unsigned)k < PROX_SHAPE_KIND_COUNT_ ? names[k] : "?";
 }

@@ -20,6 +20,15 @@ PROX_API const char *prox_status_str(prox_status s)
     case PROX_ENUMERIC: return "numerical failure: an internal solver did not converge";
     case PROX_ENOMEM: return "out of memory";
     case PROX_EUNSUPPORTED: return "query not supported for this pair of shapes";
+    case PROX_EINVAL_TRC: return "invalid input: TRC radii must be >= 0, not both 0 and not equal";
+    case PROX_EINVAL_REC_ORTHO: return "invalid input: REC axis and semi-axis vectors are not mutually orthogonal";
+    case PROX_EINVAL_ELL: return "invalid input: ELL major radius must exceed half the distance between the foci";
+    case PROX_EINVAL_RHP:
+        return "invalid input: RHP facet vectors must be perpendicular to the height and bound a convex hexagon";
+    case PROX_EINVAL_WED: return "invalid input: WED triangle sides parallel or height not perpendicular to them";
+    case PROX_EINVAL_ARB_FACE: return "invalid input: ARB face names a missing, repeated or unused corner";
+    case PROX_EINVAL_ARB_PLANAR: return "invalid input: ARB face corners are not coplanar";
+    case PROX_EINVAL_ARB_CONVEX: return "invalid input: ARB faces do not bound a convex closed body";
     case PROX_STATUS_COUNT_: break;
     }
     return "unknown status code";

@@ -32,6 +32,18 @@
  * are parallel to ~1e-10. */
 #define PROX_TOL_FACE 1e-9
 
+/* The depth's ridge of one cylinder is solved in the ridge plane (the other cylinder's shadow, an
+ * ellipse of semi-axes r and r |cos|) only while b / a = |cos| of the axes' angle exceeds 1e-3: a
+ * thinner ellipse (the other axis within 0.06 degrees of the ridge plane, ~0.1 % of random pairs)
+ * curves at its tips at b^2 / a, where its feet are ill-conditioned; the rims' quartics take it. */
+#define PROX_TOL_RIDGE_THIN 1e-3
+
+/* The witnesses of an overlapping answer give its normal as (p1 - p2) / |p1 - p2| when that lies
+ * within 1 - cos <= PROX_TOL_NORMAL_AGREE (~1.4e-6 rad) of the search's direction: a direction
+ * polished to 1e-8 rad makes r x 1e-8 of p2 - p1 - sd n, the witness pair is exact to second order;
+ * farther apart the two name different contacts (or p1 - p2 is rounding) and the direction is kept. */
+#define PROX_TOL_NORMAL_AGREE 1e-12
+
 /* A radial offset below 64 eps (|offset| + r) is rounding noise: its direction means nothing
  * (coaxial circles, a point on an axis). */
 #define PROX_TOL_NOISE (64.0 * DBL_EPSILON)
@@ -49,6 +61,12 @@
 /* Scene broad phase: bounding volumes are enlarged by this relative slack, so that a pair whose
  * exact distance equals the query's threshold is never culled by the rounding of a bound. */
 #define PROX_TOL_BROAD 1e-13
+
+/* Bounding boxes and spheres that scenes build from the generic body (core/body.h: TRC, REC, ELL,
+ * RHP, WED, ARB) are enlarged by PROX_TOL_BOUND x (|c| + extent): the reference point c, the geometry
+ * relative to it and the support function are each a few ulps off, and 64 eps covers their sum with
+ * room to spare; a looser bound only costs a few more candidates. */
+#define PROX_TOL_BOUND (64.0 * DBL_EPSILON)
 
 /* ---- primitive and circle geometry (src/core/circle*.c, src/distance primitives, boxes) ---- */
 
@@ -156,6 +174,11 @@
  * snap accepted 1e-12 S). GJK on the support points of K stops when its two bounds meet to the same. */
 #define PROX_TOL_SNAP (4.0 * DBL_EPSILON)
 
+/* The depth certificate of the any-pair support method (src/sat/convex.c): the cover of the sphere
+ * of directions stops when every cell's lower bound is within PROX_TOL_DEPTH_CERT x S of the depth
+ * found, ten times inside the 1e-9 S the depths promise. */
+#define PROX_TOL_DEPTH_CERT 1e-10
+
 /* A Newton bracket on an angle narrower than PROX_TOL_ANGLE rad is at the rounding of the angle. */
 #define PROX_TOL_ANGLE 1e-14
 
@@ -173,5 +196,74 @@
  * (M^4 <= 1e256, far from overflow). Beyond it circle a is a point to within 1e-64 of the pair's extent,
  * and the pair is solved from circle b, or (both beyond) any rim point stands for each rim. */
 #define PROX_CC_RANGE 1e64
+
+/* ---- convex polytopes (src/core/polytope*.c, src/distance/poly_pairs.c) ---- */
+
+/* A polytope macrobody is degenerate when a feature it needs vanishes below PROX_TOL_POLY_DEGEN
+ * relative: WED sides with |sin(v1, v2)| at or below it, an RHP hexagon side shorter than it times the
+ * hexagon's size, ARB corners closer than it times the body's size or a face with no corner that
+ * far behind its plane. Flat bodies above it (a WED at 1e-6 rad) are valid and solved exactly. */
+#define PROX_TOL_POLY_DEGEN 1e-9
+
+/* An ARB face is planar when every corner lies within PROX_TOL_ARB_PLANAR x size of the face's
+ * plane (Newell normal through the corners' mean), and a corner counts as behind a face plane to the
+ * same slack. Cards print corners to ~10 digits, so a face written as planar is planar to ~1e-10; a
+ * larger offset is a fault of the card, not rounding. */
+#define PROX_TOL_ARB_PLANAR 1e-9
+
+/* ---- curved macrobodies (src/core/ellipse2.c, cone.c, ecyl.c, ellb.c) ---- */
+
+/* Point-ellipse secular equation (core/ellipse2.c): the safeguarded Newton iteration stops when its
+ * step is below PROX_ELLIPSE_STEP relative (Newton is then quadratic: the error left is ~ step^2),
+ * or after PROX_ELLIPSE_MAXIT steps (bisection alone needs at most ~2100 for any double bracket;
+ * with the Newton steps it takes about 4 on average over random ellipses and points). */
+#define PROX_ELLIPSE_STEP (4.0 * DBL_EPSILON)
+#define PROX_ELLIPSE_MAXIT 2200
+
+/* ---- cell check (src/cells/classify.c, check.c) ---- */
+
+/* Rounding allowance of the box-surface classification, relative to the sum of the magnitudes of
+ * every term of the centred quadric form: each bound is a sum of at most ~20 rounded products, so
+ * its error is below ~20 eps of that sum; 64 eps leaves a factor 3 to spare. */
+#define PROX_TOL_CLASSIFY (64.0 * DBL_EPSILON)
+
+/* Two surfaces whose normalised global coefficients agree to PROX_TOL_SURF_SAME are one surface for
+ * the cell check (a PZ card and a macrobody facet on the same plane, a filled window's boundary
+ * mapped into the universe's frame): they differ by rounding, a sliver 1e-12 of the model thin, far
+ * below any resolution, which as two surfaces would keep every box along them undecided. */
+#define PROX_TOL_SURF_SAME 1e-12
+
+/* Bounding boxes of cells are widened by PROX_TOL_CELL_BOX relative: they only prune (a cell whose
+ * box misses a box cannot claim it), so widening costs nothing and covers the rounding of the
+ * inverse of a well-conditioned quadric matrix (condition checked against PROX_TOL_CELL_PD). */
+#define PROX_TOL_CELL_BOX 1e-6
+#define PROX_TOL_CELL_PD 1e-8
+
+/* Support features of a polytope for the depth witnesses: corners within PROX_TOL_POLY_FEATURE S of
+ * the support value along the depth axis form the feature (a face nearly facing the axis counts as
+ * the face). The witnesses' offset along the axis is then within this of the depth, below the 1e-9 S
+ * the depths promise, and the projections of the two features still meet when rounding tilts a face. */
+#define PROX_TOL_POLY_FEATURE 1e-10
+
+/* ---- containment of any pair (src/query/contain_any.c) ---- */
+
+/* The branch-and-bound of a curved body's clearance in a curved body (over the normals of B's lateral
+ * surface or of an ellipsoid B) closes a cell when its second-order bound is within
+ * PROX_TOL_CONTAIN_BB S of the best value found: the clearance is certified to that, the accuracy the
+ * answers promise; the bound is quadratic at a smooth maximum and linear at a kink, so the cells left
+ * open stay few. Only pairs within this of touching from inside can be misjudged as nested. */
+#define PROX_TOL_CONTAIN_BB 1e-12
+
+/* The exact witnesses of a disjoint pair more than PROX_TOL_WITNESS_DIR S apart define the normal to
+ * 1e-12 rad (each point is good to ~1e-16 S): the generic signed distance takes their direction in
+ * place of the support method's maximiser of the flat -phi (src/query/query.c). */
+#define PROX_TOL_WITNESS_DIR 1e-4
+
+/* Coaxial solids of revolution (src/distance/curved_pairs.c): axes parallel within this angle and
+ * each body's axis point within this x the pair's scale (plus 8 ulps of its coordinates, the input's
+ * own precision) of the common axis. Moving the second body onto the first axis then moves it by at
+ * most ~1e-13 S, and the distance and signed distance, being 1-Lipschitz under such moves, by no
+ * more: well inside the 1e-12 S the answers promise. */
+#define PROX_TOL_COAXIAL_REV 1e-13
 
 #endif

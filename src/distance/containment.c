@@ -9,7 +9,6 @@
  * axis: the farthest point from the axis of the ellipse the rim projects onto
  * (prox_cyl_in_cyl_clearance, core/cyl_contain.c: the containment the RCC-RCC query shares). */
 #include "distance/box_internal.h"
-#include "core/body.h"
 
 static double box_point_clear(const prox_bframe *B, prox_vec3 x)
 {
@@ -30,13 +29,31 @@ static double cyl_point_clear(const prox_cyl *c, prox_vec3 x)
 /* A validated cylinder prepared in absolute coordinates. */
 static prox_cyl cyl_of(const prox_rcc *c) { return prox_cyl_make(c, prox_v3(0, 0, 0)); }
 
+/* Centre and size of a valid RCC, BOX or SPH as the generic body has them (core/body.c: the pair's
+ * scale of every generic query), without building the body. */
+static prox_vec3 centre_size(const prox_shape *s, double *size)
+{
+    if (s->kind == PROX_SHAPE_RCC) {
+        *size = fmax(prox_v3_norm(s->u.rcc.axis), 2.0 * s->u.rcc.radius);
+        return prox_rcc_center(&s->u.rcc);
+    }
+    if (s->kind == PROX_SHAPE_SPH) {
+        *size = 2.0 * s->u.sph.radius;
+        return s->u.sph.center;
+    }
+    prox_bframe f = prox_bframe_make(&s->u.box);
+    *size = prox_bframe_size(&f);
+    return f.m;
+}
+
 /* Result of valid input: inside when the clearance is >= -tol (tol relative to the pair's scale). */
 static prox_contain_result finish(double clear, prox_shape a, prox_shape b)
 {
     prox_contain_result r = {0};
     r.status = PROX_OK;
-    prox_body ba = prox_body_make(&a), bb = prox_body_make(&b);
-    double s = fmax(prox_v3_dist(ba.c, bb.c), fmax(ba.size, bb.size));
+    double sa, sb;
+    prox_vec3 ca = centre_size(&a, &sa), cb = centre_size(&b, &sb);
+    double s = fmax(prox_v3_dist(ca, cb), fmax(sa, sb));
     r.clearance = clear;
     r.inside = clear >= -PROX_QUERY_REL_TOL * s;
     return r;

@@ -1,9 +1,10 @@
 /* BOX-RCC signed distance: the exact distance of src/distance when the solids are disjoint, the
- * penetration depth of the support-function engine (src/sat) when they overlap. It composes the two
+ * penetration depth of src/sat (closed-form enumeration of the strata) when they overlap. It composes the two
  * modules, hence lives here and not in either of them. */
 #include "core/box.h"
 #include "prox/pairs.h"
 #include "prox/support.h"
+#include "sat/sat_internal.h"
 
 PROX_API prox_signed_result prox_box_rcc_signed_distance(const prox_box *a, const prox_rcc *b)
 {
@@ -18,7 +19,7 @@ PROX_API prox_signed_result prox_box_rcc_signed_distance(const prox_box *a, cons
         r.p2 = d.p2;
         return r;
     }
-    /* overlapping: minimum of h_A(D) + h_B(-D) over unit D (support-function engine) */
-    prox_shape sa = prox_shape_from_box(*a), sb = prox_shape_from_rcc(*b);
-    return prox_shape_signed_distance_support(&sa, &sb);
+    /* overlapping: minimum of h_A(D) + h_B(-D) over unit D, every stratum enumerated in closed
+     * form (src/sat/box_rcc_depth.c) */
+    return prox_sat_box_rcc_depth(a, b);
 }

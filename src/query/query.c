@@ -1,51 +1,81 @@
-/* The generic entry point: one set of queries for any pair of macrobodies (RCC, BOX, RPP, SPH),
- * dispatching to the specialised pair solvers; an RPP is answered as the BOX it describes, and a pair
- * whose solver is written the other way round is swapped and its answer mirrored (p1 <-> p2, normal
- * negated). The relation and the repositioning of the TRX report (LA-UR-13-26757, Sec. 4: "a
- * prescription to reposition an object that is determined to collide") are built on the signed
- * distance: moving B by (margin - sd) along the signed-distance normal leaves the supporting planes at
- * the witnesses exactly `margin` apart, so dist(A, B') = margin. */
+/* The generic entry point: one set of queries for any pair of the ten macrobodies, each pair sent to
+ * the cheapest exact solver for it (docs/algorithms/dispatch.md):
+ *  - RCC, BOX, RPP, SPH among themselves: the specialised pair solvers of pairs.h (an RPP answered as
+ *    the BOX it describes);
+ *  - a sphere against anything: the sphere's centre against the other solid (sphere_any.c);
+ *  - two polytopes (BOX, RPP, RHP, WED, ARB), one of them new: the exact polytope solver
+ *    (src/distance/poly_internal.h);
+ *  - every other pair: the certified support-function method of any two bodies (src/sat/convex.h).
+ * A pair whose solver is written the other way round is swapped and its answer mirrored (p1 <-> p2,
+ * normal negated). Each shape is validated once: by the specialised solver itself, or here before a
+ * solver that takes prepared bodies. The relation and the repositioning of the TRX report
+ * (LA-UR-13-26757, Sec. 4: "a prescription to reposition an object that is determined to collide")
+ * are built on the signed distance: moving B by (margin - sd) along the signed-distance normal leaves
+ * the supporting planes at the witnesses exactly `margin` apart, so dist(A, B') = margin. */
+#include "core/body.h"
 #include "distance/box_internal.h"
+#include "distance/curved_internal.h"
+#include "distance/poly_internal.h"
 #include "query/query_internal.h"
 #include "prox/distance.h"
 #include "prox/sat.h"
 #include "prox/support.h"
+#include "sat/convex.h"
 
 #include <float.h>
 #include <stddef.h>
 
-/* Kind after RPP -> BOX, and the box itself. */
-typedef struct norm_shape {
-    prox_shape_kind kind; /* RCC, BOX or SPH */
-    prox_box box;
-    const prox_shape *s;
-} norm_shape;
+/* ---- routes ---- */
 
-static prox_status normalise(const prox_shape *s, norm_shape *n)
+typedef enum route {
+    ROUTE_OLD,    /* both of RCC, BOX, RPP, SPH, not a sphere against a non-sphere */
+    ROUTE_SPH_A,  /* A a sphere, B not */
+    ROUTE_SPH_B,  /* B a sphere, A not */
+    ROUTE_POLY,   /* two polytopes, one of them RHP, WED or ARB */
+    ROUTE_CONVEX  /* the rest: the support-function method */
+} route;
+
+static int kind_old(prox_shape_kind k) { return k <= PROX_SHAPE_SPH; }
+static int kind_poly(prox_shape_kind k)
 {
-    prox_status st = prox_shape_validate(s);
-    if (st != PROX_OK) return st;
-    n->s = s;
-    n->kind = s->kind == PROX_SHAPE_RPP ? PROX_SHAPE_BOX : s->kind;
-    if (s->kind == PROX_SHAPE_RPP) n->box = prox_rpp_to_box(&s->u.rpp);
-    else if (s->kind == PROX_SHAPE_BOX) n->box = s->u.box;
+    return k == PROX_SHAPE_BOX || k == PROX_SHAPE_RPP || k >= PROX_SHAPE_RHP;
+}
+
+/* The route of a pair of known kinds. */
+static route route_of(prox_shape_kind ka, prox_shape_kind kb)
+{
+    int sa = ka == PROX_SHAPE_SPH, sb = kb == PROX_SHAPE_SPH;
+    if (sa != sb) return sa ? ROUTE_SPH_A : ROUTE_SPH_B;
+    if (kind_old(ka) && kind_old(kb)) return ROUTE_OLD;
+    if (kind_poly(ka) && kind_poly(kb)) return ROUTE_POLY;
+    return ROUTE_CONVEX;
+}
+
+/* PROX_OK when both pointers and kinds can be dispatched (the shapes themselves are validated by
+ * the route). */
+static prox_status check_kinds(const prox_shape *a, const prox_shape *b)
+{
+    if (!a || !b) return PROX_EINVAL_ARG;
+    if ((unsigned)a->kind >= PROX_SHAPE_KIND_COUNT_ || (unsigned)b->kind >= PROX_SHAPE_KIND_COUNT_)
+        return PROX_EINVAL_SHAPE_KIND;
     return PROX_OK;
 }
 
-static prox_status normalise2(const prox_shape *a, const prox_shape *b, norm_shape *na, norm_shape *nb)
+/* First failing validation in the order of the call. */
+static prox_status validate2(const prox_shape *a, const prox_shape *b)
 {
-    prox_status st = normalise(a, na);
-    return st != PROX_OK ? st : normalise(b, nb);
+    prox_status st = prox_shape_validate(a);
+    return st != PROX_OK ? st : prox_shape_validate(b);
 }
-
-/* Order of kinds for the canonical pair: BOX < RCC < SPH (the solvers take them in that order). */
-static int rank(prox_shape_kind k) { return k == PROX_SHAPE_BOX ? 0 : (k == PROX_SHAPE_RCC ? 1 : 2); }
 
 static prox_distance_result mirror_d(prox_distance_result r)
 {
     prox_vec3 t = r.p1;
     r.p1 = r.p2;
     r.p2 = t;
+    int x = r.a_in_b;
+    r.a_in_b = r.b_in_a;
+    r.b_in_a = x;
     return r;
 }
 
@@ -58,9 +88,48 @@ static prox_signed_result mirror_s(prox_signed_result r)
     return r;
 }
 
+static prox_test_result mirror_t(prox_test_result r)
+{
+    r.direction = prox_v3_neg(r.direction);
+    return r;
+}
+
+/* ---- the specialised pairs of RCC, BOX (RPP), SPH ---- */
+
+/* Kind after RPP -> BOX, and the box itself (an RPP validated first: its box would pass as a box). */
+typedef struct norm_shape {
+    prox_shape_kind kind; /* RCC, BOX or SPH */
+    prox_box box;
+    const prox_shape *s;
+} norm_shape;
+
+static prox_status normalise(const prox_shape *s, norm_shape *n)
+{
+    n->s = s;
+    n->kind = s->kind == PROX_SHAPE_RPP ? PROX_SHAPE_BOX : s->kind;
+    if (s->kind == PROX_SHAPE_RPP) {
+        prox_status st = prox_rpp_validate(&s->u.rpp);
+        if (st != PROX_OK) return st;
+        n->box = prox_rpp_to_box(&s->u.rpp);
+    } else if (s->kind == PROX_SHAPE_BOX) {
+        n->box = s->u.box;
+    }
+    return PROX_OK;
+}
+
+static prox_status normalise2(const prox_shape *a, const prox_shape *b, norm_shape *na, norm_shape *nb)
+{
+    prox_status st = normalise(a, na);
+    return st != PROX_OK ? st : normalise(b, nb);
+}
+
+/* Order of kinds for the canonical pair: BOX < RCC < SPH (the solvers take them in that order). */
+static int rank(prox_shape_kind k) { return k == PROX_SHAPE_BOX ? 0 : (k == PROX_SHAPE_RCC ? 1 : 2); }
+
 /* RCC-RCC distance by the default method (prox_rcc_distance: prediction and certificate, the
  * closed-form method when that cannot certify). The cylinder-pair details (Agarwal's case, feature
- * pair) are left out, as for every other shape pair; the certificate and the method are kept. */
+ * pair) are left out, as for every other shape pair; the certificate, the method and the nesting
+ * flags are kept. */
 static prox_distance_result rcc_rcc_distance(const prox_rcc *a, const prox_rcc *b)
 {
     prox_distance_result r = {0};
@@ -74,10 +143,12 @@ static prox_distance_result rcc_rcc_distance(const prox_rcc *a, const prox_rcc *
     r.certificate_gap = e.intersect ? 0.0 : e.certificate_gap;
     r.certified = e.certified;
     r.method = e.method;
+    r.a_in_b = e.a_in_b;
+    r.b_in_a = e.b_in_a;
     return r;
 }
 
-/* Canonical-order distance (rank(a) <= rank(b)). */
+/* Canonical-order distance (rank(a) <= rank(b)); the solvers validate their shapes. */
 static prox_distance_result dist_canon(const norm_shape *a, const norm_shape *b)
 {
     const prox_shape *sa = a->s, *sb = b->s;
@@ -104,41 +175,9 @@ static prox_signed_result signed_canon(const norm_shape *a, const norm_shape *b)
     }
 }
 
-PROX_API double prox_shape_pair_scale(const prox_shape *a, const prox_shape *b)
-{
-    if (prox_shape_validate(a) != PROX_OK || prox_shape_validate(b) != PROX_OK) return 0.0;
-    double s = prox_v3_dist(prox_shape_center(a), prox_shape_center(b));
-    return fmax(s, fmax(prox_shape_size(a), prox_shape_size(b)));
-}
-
-PROX_API prox_distance_result prox_shape_distance(const prox_shape *a, const prox_shape *b)
-{
-    prox_distance_result r = {0};
-    norm_shape na, nb;
-    r.status = normalise2(a, b, &na, &nb);
-    if (r.status != PROX_OK) return r;
-    if (rank(na.kind) <= rank(nb.kind)) return dist_canon(&na, &nb);
-    return mirror_d(dist_canon(&nb, &na));
-}
-
-PROX_API prox_signed_result prox_shape_signed_distance(const prox_shape *a, const prox_shape *b)
-{
-    prox_signed_result r = {0};
-    norm_shape na, nb;
-    r.status = normalise2(a, b, &na, &nb);
-    if (r.status != PROX_OK) return r;
-    if (rank(na.kind) <= rank(nb.kind)) return signed_canon(&na, &nb);
-    return mirror_s(signed_canon(&nb, &na));
-}
-
-PROX_API prox_test_result prox_shape_test(const prox_shape *a, const prox_shape *b)
+static prox_test_result test_canon(const norm_shape *x, const norm_shape *y)
 {
     prox_test_result r = {0};
-    norm_shape na, nb;
-    r.status = normalise2(a, b, &na, &nb);
-    if (r.status != PROX_OK) return r;
-    const norm_shape *x = &na, *y = &nb;
-    if (rank(na.kind) > rank(nb.kind)) x = &nb, y = &na;
     if (x->kind == PROX_SHAPE_BOX && y->kind == PROX_SHAPE_BOX) return prox_box_box_test(&x->box, &y->box);
     if (x->kind == PROX_SHAPE_BOX && y->kind == PROX_SHAPE_RCC) return prox_box_rcc_test(&x->box, &y->s->u.rcc);
     if (x->kind == PROX_SHAPE_RCC && y->kind == PROX_SHAPE_RCC) { /* the certified SAT: ~6x cheaper */
@@ -153,25 +192,181 @@ PROX_API prox_test_result prox_shape_test(const prox_shape *a, const prox_shape 
     return r;
 }
 
-PROX_API prox_contain_result prox_shape_contains(const prox_shape *a, const prox_shape *b)
+/* ---- the polytope pairs and the support-function method ---- */
+
+/* The polytopes of two valid polytope shapes (reference points in *ca, *cb). */
+static void polys(const prox_shape *a, const prox_shape *b, prox_polytope *pa, prox_vec3 *ca, prox_polytope *pb,
+                  prox_vec3 *cb)
 {
-    prox_contain_result r = {0};
-    norm_shape na, nb;
-    r.status = normalise2(a, b, &na, &nb);
-    if (r.status != PROX_OK) return r;
+    *ca = prox_polytope_make(a, pa);
+    *cb = prox_polytope_make(b, pb);
+}
+
+static prox_distance_result poly_distance(const prox_shape *a, const prox_shape *b)
+{
+    prox_polytope pa, pb;
+    prox_vec3 ca, cb;
+    polys(a, b, &pa, &ca, &pb, &cb);
+    return prox_poly_distance(&pa, ca, &pb, cb);
+}
+
+static prox_signed_result poly_signed(const prox_shape *a, const prox_shape *b)
+{
+    prox_polytope pa, pb;
+    prox_vec3 ca, cb;
+    polys(a, b, &pa, &ca, &pb, &cb);
+    return prox_poly_signed(&pa, ca, &pb, cb);
+}
+
+/* Coaxial solids of revolution (RCC, TRC, ELL, SPH on one axis) have a whole circle of optimal
+ * directions, where the support method is degenerate: their meridian sections answer in closed form
+ * (distance/curved_internal.h). */
+static prox_distance_result convex_distance(const prox_shape *a, const prox_shape *b)
+{
+    if (prox_coaxial_pair(a, b)) return prox_coaxial_distance(a, b);
+    prox_body ba = prox_body_make(a), bb = prox_body_make(b);
+    return prox_convex_distance(&ba, &bb);
+}
+
+/* The support method's normal of a disjoint pair is the maximiser of -phi, where -phi is flat: it
+ * can stand ~1e-10 rad off the line of the witnesses (p2 - p1 then misses sd normal by sd x that).
+ * The witnesses are the exact closest pair, so their direction is the normal: taken when they are
+ * more than PROX_TOL_WITNESS_DIR S apart (its rounding then below 1e-12 rad). */
+static prox_signed_result convex_signed(const prox_shape *a, const prox_shape *b)
+{
+    if (prox_coaxial_pair(a, b)) return prox_coaxial_signed_distance(a, b);
+    prox_body ba = prox_body_make(a), bb = prox_body_make(b);
+    prox_signed_result s = prox_convex_signed(&ba, &bb);
+    if (s.status == PROX_OK && s.sd > 0.0) {
+        prox_vec3 v = prox_v3_sub(s.p2, s.p1);
+        double len = prox_v3_norm(v), S = fmax(prox_v3_dist(ba.c, bb.c), fmax(ba.size, bb.size));
+        if (len > PROX_TOL_WITNESS_DIR * S) s.normal = prox_v3_scale(v, 1.0 / len);
+    }
+    return s;
+}
+
+/* ---- public queries ---- */
+
+/* The pair scale of valid shapes. */
+static double pair_scale(const prox_shape *a, const prox_shape *b)
+{
+    prox_vec3 ca, cb;
+    double sa, sb;
+    prox_query_center_size(a, &ca, &sa);
+    prox_query_center_size(b, &cb, &sb);
+    return fmax(prox_v3_dist(ca, cb), fmax(sa, sb));
+}
+
+PROX_API double prox_shape_pair_scale(const prox_shape *a, const prox_shape *b)
+{
+    if (prox_shape_validate(a) != PROX_OK || prox_shape_validate(b) != PROX_OK) return 0.0;
+    return pair_scale(a, b);
+}
+
+PROX_API prox_distance_result prox_shape_distance(const prox_shape *a, const prox_shape *b)
+{
+    prox_distance_result r = {0};
+    if ((r.status = check_kinds(a, b)) != PROX_OK) return r;
+    switch (route_of(a->kind, b->kind)) {
+    case ROUTE_SPH_B: return prox_query_sph_distance(a, &b->u.sph, 0);
+    case ROUTE_SPH_A: return mirror_d(prox_query_sph_distance(b, &a->u.sph, 1));
+    case ROUTE_OLD: {
+        norm_shape na, nb;
+        if ((r.status = normalise2(a, b, &na, &nb)) != PROX_OK) return r;
+        if (rank(na.kind) <= rank(nb.kind)) return dist_canon(&na, &nb);
+        r = mirror_d(dist_canon(&nb, &na));
+        if (r.status != PROX_OK) r.status = validate2(a, b);
+        return r;
+    }
+    default: break;
+    }
+    if ((r.status = validate2(a, b)) != PROX_OK) return r;
+    return route_of(a->kind, b->kind) == ROUTE_POLY ? poly_distance(a, b) : convex_distance(a, b);
+}
+
+PROX_API prox_signed_result prox_shape_signed_distance(const prox_shape *a, const prox_shape *b)
+{
+    prox_signed_result r = {0};
+    if ((r.status = check_kinds(a, b)) != PROX_OK) return r;
+    switch (route_of(a->kind, b->kind)) {
+    case ROUTE_SPH_B: return prox_query_sph_signed(a, &b->u.sph, 0);
+    case ROUTE_SPH_A: return mirror_s(prox_query_sph_signed(b, &a->u.sph, 1));
+    case ROUTE_OLD: {
+        norm_shape na, nb;
+        if ((r.status = normalise2(a, b, &na, &nb)) != PROX_OK) return r;
+        if (rank(na.kind) <= rank(nb.kind)) return signed_canon(&na, &nb);
+        r = mirror_s(signed_canon(&nb, &na));
+        if (r.status != PROX_OK) r.status = validate2(a, b);
+        return r;
+    }
+    default: break;
+    }
+    if ((r.status = validate2(a, b)) != PROX_OK) return r;
+    return route_of(a->kind, b->kind) == ROUTE_POLY ? poly_signed(a, b) : convex_signed(a, b);
+}
+
+PROX_API prox_test_result prox_shape_test(const prox_shape *a, const prox_shape *b)
+{
+    prox_test_result r = {0};
+    if ((r.status = check_kinds(a, b)) != PROX_OK) return r;
+    switch (route_of(a->kind, b->kind)) {
+    case ROUTE_SPH_B: return prox_query_sph_test(a, &b->u.sph, 0);
+    case ROUTE_SPH_A: return mirror_t(prox_query_sph_test(b, &a->u.sph, 1));
+    case ROUTE_OLD: {
+        norm_shape na, nb;
+        if ((r.status = normalise2(a, b, &na, &nb)) != PROX_OK) return r;
+        if (rank(na.kind) <= rank(nb.kind)) return test_canon(&na, &nb);
+        r = mirror_t(test_canon(&nb, &na));
+        if (r.status != PROX_OK) r.status = validate2(a, b);
+        return r;
+    }
+    default: break;
+    }
+    /* The verdict of the exact distance: its common point is checked in both solids, its separation
+     * certified by a gap (the sign of the distance is the verdict). */
+    prox_distance_result d = prox_shape_distance(a, b);
+    r.status = d.status;
+    r.intersect = d.intersect;
+    if (d.status == PROX_OK && !d.intersect && d.distance > 0.0) {
+        r.direction = prox_v3_scale(prox_v3_sub(d.p2, d.p1), 1.0 / d.distance);
+        r.value = d.certificate_gap;
+    }
+    return r;
+}
+
+/* Containment of the specialised pairs (kinds RCC, BOX, SPH after RPP -> BOX). */
+static prox_contain_result contains_old(const norm_shape *na, const norm_shape *nb)
+{
+    const prox_shape *a = na->s, *b = nb->s;
     const prox_rcc *ra = &a->u.rcc, *rb = &b->u.rcc;
     const prox_sph *pa = &a->u.sph, *pb = &b->u.sph;
-    switch (na.kind * 4 + nb.kind) {
-    case PROX_SHAPE_BOX * 4 + PROX_SHAPE_BOX: return prox_box_in_box(&na.box, &nb.box);
-    case PROX_SHAPE_BOX * 4 + PROX_SHAPE_RCC: return prox_box_in_rcc(&na.box, rb);
-    case PROX_SHAPE_BOX * 4 + PROX_SHAPE_SPH: return prox_box_in_sph(&na.box, pb);
-    case PROX_SHAPE_RCC * 4 + PROX_SHAPE_BOX: return prox_rcc_in_box(ra, &nb.box);
+    switch (na->kind * 4 + nb->kind) {
+    case PROX_SHAPE_BOX * 4 + PROX_SHAPE_BOX: return prox_box_in_box(&na->box, &nb->box);
+    case PROX_SHAPE_BOX * 4 + PROX_SHAPE_RCC: return prox_box_in_rcc(&na->box, rb);
+    case PROX_SHAPE_BOX * 4 + PROX_SHAPE_SPH: return prox_box_in_sph(&na->box, pb);
+    case PROX_SHAPE_RCC * 4 + PROX_SHAPE_BOX: return prox_rcc_in_box(ra, &nb->box);
     case PROX_SHAPE_RCC * 4 + PROX_SHAPE_RCC: return prox_rcc_in_rcc(ra, rb);
     case PROX_SHAPE_RCC * 4 + PROX_SHAPE_SPH: return prox_rcc_in_sph(ra, pb);
-    case PROX_SHAPE_SPH * 4 + PROX_SHAPE_BOX: return prox_sph_in_box(pa, &nb.box);
+    case PROX_SHAPE_SPH * 4 + PROX_SHAPE_BOX: return prox_sph_in_box(pa, &nb->box);
     case PROX_SHAPE_SPH * 4 + PROX_SHAPE_RCC: return prox_sph_in_rcc(pa, rb);
     default: return prox_sph_in_sph(pa, pb);
     }
+}
+
+PROX_API prox_contain_result prox_shape_contains(const prox_shape *a, const prox_shape *b)
+{
+    prox_contain_result r = {0};
+    if ((r.status = check_kinds(a, b)) != PROX_OK) return r;
+    if (kind_old(a->kind) && kind_old(b->kind)) {
+        norm_shape na, nb;
+        if ((r.status = normalise2(a, b, &na, &nb)) != PROX_OK) return r;
+        return contains_old(&na, &nb);
+    }
+    if ((r.status = validate2(a, b)) != PROX_OK) return r;
+    int certified;
+    r.clearance = prox_query_clearance(a, b, &certified);
+    r.inside = r.clearance >= -PROX_QUERY_REL_TOL * pair_scale(a, b);
+    return r;
 }
 
 prox_relation_result prox_shape_relation_with_signed(const prox_shape *a, const prox_shape *b, double tol,
@@ -186,7 +381,7 @@ prox_relation_result prox_shape_relation_with_signed(const prox_shape *a, const 
     if (s_out) *s_out = s;
     r.status = s.status;
     if (r.status != PROX_OK) return r;
-    r.tol = tol >= 0.0 ? tol : PROX_QUERY_REL_TOL * prox_shape_pair_scale(a, b);
+    r.tol = tol >= 0.0 ? tol : PROX_QUERY_REL_TOL * pair_scale(a, b);
     r.signed_distance = s.sd;
     if (s.sd > r.tol) {
         r.relation = PROX_REL_DISJOINT;
@@ -250,6 +445,16 @@ PROX_API prox_reposition_result prox_shape_reposition(const prox_shape *a, const
     return r;
 }
 
+/* The ARB's corners named by its faces (an unused corner stays zero, as the card leaves it). */
+static unsigned arb_used(const prox_arb *a)
+{
+    unsigned m = 0;
+    for (int f = 0; f < 6; ++f)
+        for (int x = a->face[f]; x > 0; x /= 10)
+            if (x % 10 >= 1 && x % 10 <= 8) m |= 1u << (x % 10 - 1);
+    return m;
+}
+
 /* s moved by t, by kind (no validation). */
 static prox_shape translate(const prox_shape *s, prox_vec3 t)
 {
@@ -263,6 +468,18 @@ static prox_shape translate(const prox_shape *s, prox_vec3 t)
         o.u.rpp.ymin += t.y, o.u.rpp.ymax += t.y;
         o.u.rpp.zmin += t.z, o.u.rpp.zmax += t.z;
         break;
+    case PROX_SHAPE_TRC: o.u.trc.base = prox_v3_add(o.u.trc.base, t); break;
+    case PROX_SHAPE_REC: o.u.rec.base = prox_v3_add(o.u.rec.base, t); break;
+    case PROX_SHAPE_ELL: o.u.ell.center = prox_v3_add(o.u.ell.center, t); break;
+    case PROX_SHAPE_RHP: o.u.rhp.base = prox_v3_add(o.u.rhp.base, t); break;
+    case PROX_SHAPE_WED: o.u.wed.vertex = prox_v3_add(o.u.wed.vertex, t); break;
+    case PROX_SHAPE_ARB: {
+        unsigned m = arb_used(&s->u.arb);
+        for (int i = 0; i < 8; ++i)
+            if (m >> i & 1u) o.u.arb.corner[i] = prox_v3_add(o.u.arb.corner[i], t);
+        break;
+    }
+    default: break;
     }
     return o;
 }

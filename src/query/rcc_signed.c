@@ -4,7 +4,33 @@
  * functions: prox_sat_rcc_depth) when they overlap. */
 #include "prox/distance.h"
 #include "prox/sat.h"
+#include "core/body.h"
 #include "sat/sat_internal.h"
+
+/* Polishes a disjoint pair's witnesses p1 in A, p2 in B whose separation differs from the certified
+ * distance d (the fast method's points may sit 1e-11 S off the boundaries of a near-touching contact
+ * while its distance is certified): alternating exact projections onto the solids, in coordinates
+ * relative to A's base, accepted while |p2 - p1| decreases (each projection keeps its point on a
+ * solid and never increases the separation; for a unique closest pair they converge to it). */
+static void polish_disjoint(const prox_rcc *a, const prox_rcc *b, double d, prox_vec3 *p1, prox_vec3 *p2)
+{
+    prox_vec3 o = a->base;
+    prox_rcc ra = *a, rb = *b;
+    ra.base = prox_v3(0, 0, 0);
+    rb.base = prox_v3_sub(b->base, o);
+    prox_shape sa = prox_shape_from_rcc(ra), sb = prox_shape_from_rcc(rb);
+    prox_body ba = prox_body_make(&sa), bb = prox_body_make(&sb);
+    prox_vec3 x = prox_v3_sub(*p1, o), y = prox_v3_sub(*p2, o);
+    double e = fabs(prox_v3_dist(x, y) - d);
+    for (int it = 0; it < 8; ++it) {
+        prox_vec3 yn = prox_body_closest(&bb, x), xn = prox_body_closest(&ba, yn);
+        double en = fabs(prox_v3_dist(xn, yn) - d);
+        if (!(en < e)) break;
+        x = xn, y = yn, e = en;
+    }
+    *p1 = prox_v3_add(x, o);
+    *p2 = prox_v3_add(y, o);
+}
 
 PROX_API prox_signed_result prox_rcc_signed_distance(const prox_rcc *a, const prox_rcc *b)
 {
@@ -19,11 +45,12 @@ PROX_API prox_signed_result prox_rcc_signed_distance(const prox_rcc *a, const pr
     r.sd = d.distance;
     r.p1 = d.p1;
     r.p2 = d.p2;
+    if (fabs(prox_v3_dist(d.p1, d.p2) - d.distance) > 0.0) polish_disjoint(a, b, d.distance, &r.p1, &r.p2);
     /* (p2 - p1) / |p2 - p1| is the normal: it makes p2 - p1 = sd n hold to the points' rounding. Its
      * direction carries that rounding, eps |p| / distance, so very near touching it is a supporting
      * direction only to that accuracy. When the points coincide (a distance below their resolution)
      * the separating direction of the SAT is used. */
-    prox_vec3 e = prox_v3_sub(d.p2, d.p1);
+    prox_vec3 e = prox_v3_sub(r.p2, r.p1);
     double en = prox_v3_norm(e);
     if (en > 0.0) {
         r.normal = prox_v3_scale(e, 1.0 / en);

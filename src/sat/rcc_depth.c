@@ -14,8 +14,10 @@
  *            B's rim to p1 is a stationary point of dist^2(point of A's rim, B's rim) (Agarwal Sec.
  *            3.5, prox_circle_circle_stationary); with p1 closest to p2 the same with A and B
  *            swapped; the remaining (farthest, farthest) pairs have |p1 - p2|^2 >= |p1 - cB|^2 + rB^2.
- * Cells are excluded by lower bounds of the circle-circle distance (centres, planes, spheres); only
- * a cell that could beat the best value found so far is solved (degree 8). A cell or case that cannot
+ * Cells are excluded by lower bounds of the circle-circle distance (centres, planes, spheres), then
+ * by a certified scan of the rim's angle (dp_cell_may: the normal-cone, value and stationarity
+ * conditions of a cell minimiser, each bounded over an interval by its Lipschitz constant); only a
+ * cell that could beat the best value found so far is solved (degree 8). A cell or case that cannot
  * be settled returns 0 and the caller runs the global search of sup_engine.c. */
 #include "sup_engine.h"
 
@@ -23,6 +25,7 @@
 #include "core/tol.h"
 
 #include <float.h>
+#include <string.h>
 
 /* Best direction and value so far. */
 typedef struct dp_state {
@@ -32,21 +35,19 @@ typedef struct dp_state {
     prox_vec3 best_d;
 } dp_state;
 
-static double dp_phi(const dp_state *s, prox_vec3 d)
-{
-    return prox_body_hc(s->a, d) + prox_body_hc(s->b, d) - prox_v3_dot(d, s->delta);
-}
-
-/* Evaluates +-v / |v| (v need not be unit); ignores v = 0. */
+/* Evaluates +-v / |v| (v need not be unit); ignores v = 0. Both cylinders are centrally symmetric,
+ * so the support part hc_A(D) + hc_B(D) of phi is even (exactly, in floating point: prox_cyl_hc uses
+ * D only through products that change sign with it) and one evaluation serves both signs:
+ * phi(+-D) = hc_A(D) + hc_B(D) -+ D.Delta. */
 static void dp_consider_pm(dp_state *s, prox_vec3 v)
 {
     double n = sqrt(prox_v3_norm2(v));
     if (!(n > 0.0)) return;
     v = prox_v3_scale(v, 1.0 / n);
-    for (int k = 0; k < 2; ++k, v = prox_v3_neg(v)) {
-        double f = dp_phi(s, v);
-        if (f < s->best) { s->best = f; s->best_d = v; }
-    }
+    double e = prox_cyl_hc(&s->a->cyl, v) + prox_cyl_hc(&s->b->cyl, v), dd = prox_v3_dot(v, s->delta);
+    double f = e - dd, g = e + dd;
+    if (f < s->best) { s->best = f; s->best_d = v; }
+    if (g < s->best) { s->best = g; s->best_d = prox_v3_neg(v); }
 }
 
 /* Rim circle of cylinder c at end e (+1 top, -1 bottom), in absolute coordinates: the core's rim of
@@ -78,14 +79,65 @@ static double dp_ridge_lb(const prox_fcircle *c, const prox_body *lat)
     return fmax(lb, 0.0);
 }
 
+/* Range [*lo, *hi] of the axial coordinate (q - k.c).w over the points q of circle c (k's axis w):
+ * the centre's value +- r |w x n_c|. */
+static void dp_axial_range(const prox_fcircle *c, const prox_body *k, double *lo, double *hi)
+{
+    double z = prox_v3_dot(prox_v3_sub(c->c, k->c), k->cyl.w), sp = c->r * prox_v3_norm(prox_v3_cross(k->cyl.w, c->n));
+    *lo = z - sp;
+    *hi = z + sp;
+}
+
+/* Range [*lo, *hi] (bounds) of the distance from k's axis line over the points of circle c: the
+ * centre's distance rho_c -+ r (the rim projects off the axis onto an ellipse of semi-axes <= r). */
+static void dp_radial_range(const prox_fcircle *c, const prox_body *k, double *lo, double *hi)
+{
+    double rho = prox_v3_norm(prox_v3_reject(prox_v3_sub(c->c, k->c), k->cyl.w));
+    *lo = fmax(0.0, rho - c->r);
+    *hi = rho + c->r;
+}
+
+/* Necessary condition for a minimiser with value phi <= cut whose support point p on body k is a
+ * point of k's lateral line (e = 0: D.w = 0) or of k's rim at end e (+-1), and whose other support
+ * point q lies on circle c. With D = alpha e w + beta u (u radial at p, alpha, beta >= 0, unit; alpha
+ * = 0 on the lateral line) and q = p - phi D (p2 - p1 = sd D for A's point p, the mirror for B's):
+ *   axial coordinate of q:  e (q - c_k).w = hh - phi alpha, in [hh - cut, hh] (rim), in [-hh, hh] (lateral);
+ *   distance of q from k's axis: |r - phi beta|, in [max(0, r - cut), max(r, cut - r)].
+ * 0 when circle c has no point in both ranges (the stratum holds no minimiser at or below cut). */
+static int dp_reach(const prox_fcircle *c, const prox_body *k, int e, double cut, double tol)
+{
+    double lo, hi, r = k->cyl.r, hh = k->cyl.hh;
+    dp_axial_range(c, k, &lo, &hi);
+    if (e != 0) {
+        double l = e > 0 ? lo : -hi, h = e > 0 ? hi : -lo; /* range of e (q - c_k).w */
+        if (l > hh + tol || h < hh - cut - tol) return 0;
+    } else if (lo > hh + tol || hi < -hh - tol)
+        return 0;
+    dp_radial_range(c, k, &lo, &hi);
+    return !(lo > fmax(r, cut - r) + tol || hi < r - cut - tol);
+}
+
 /* Ridge D.w = 0 of cylinder `lat` (its lateral line) against the rims of `rim`: every stationary
  * point q of dist^2(rim, axis of lat) gives D = +-(q - c_lat) projected off w. 0 when degenerate. */
 static int dp_ridge(dp_state *s, const prox_body *lat, const prox_body *rim, double tol)
 {
     prox_vec3 w = lat->cyl.w;
+    int need[2];
     for (int e = -1; e <= 1; e += 2) {
         prox_fcircle c = dp_rim(rim, e);
-        if (dp_ridge_lb(&c, lat) > s->best + tol) continue;
+        need[(e + 1) / 2] = !(dp_ridge_lb(&c, lat) > s->best + tol || !dp_reach(&c, lat, 0, s->best, tol));
+    }
+    if (!need[0] && !need[1]) return 1;
+    /* the whole ridge in its plane (rcc_ridge_shadow.c); the rims' quartics when it is degenerate */
+    prox_vec3 cand[24];
+    int nc = sup_ridge_shadow(lat, rim, s->delta, cand, 24);
+    if (nc >= 0) {
+        for (int i = 0; i < nc; ++i) dp_consider_pm(s, prox_v3_reject(cand[i], w));
+        return 1;
+    }
+    for (int e = -1; e <= 1; e += 2) {
+        prox_fcircle c = dp_rim(rim, e);
+        if (!need[(e + 1) / 2]) continue;
         double th[4];
         int cnt = 0;
         int rc = prox_circle_line_stationary(&c, lat->c, w, th, &cnt);
@@ -163,6 +215,102 @@ static int dp_cells_closest(dp_state *s, const prox_fcircle *a, const prox_fcirc
     return 1;
 }
 
+/* One cell's parametrised rim x(theta) (circle P of body kp at end ep) against rim Q of body kq at
+ * end eq, for the certified exclusion below. */
+typedef struct dp_cell {
+    const prox_fcircle *p, *q;
+    prox_vec3 wq, ezq, ezp; /* Q's axis; the outward normals eq wq, ep wp of the two end planes */
+    double cut, tol;
+    double lq; /* bound of |q - c_P| + r_P: the turn rate of f[4] from its direction u_P */
+} dp_cell;
+
+enum { DP_NCOND = 6 };
+
+/* The conditions at x = x(theta), each <= 0 at a cell minimiser (dp_cell_may), q the closest point
+ * of rim Q to x: f[0] = rho_Q(x) - r_Q, f[1] = ezq.(x - c_Q), f[2] = |x - q| - cut (1-Lipschitz in
+ * x); f[3] = ezp.(q - c_P), f[4] = (q - x).u_P(x) (through q; -inf when x is on Q's axis). */
+static void dp_cell_vals(const dp_cell *g, double th, double f[DP_NCOND])
+{
+    double c = cos(th), s = sin(th);
+    prox_vec3 ru = prox_v3_add(prox_v3_scale(g->p->u, c), prox_v3_scale(g->p->v, s)); /* u_P(x) */
+    prox_vec3 x = prox_v3_add(g->p->c, prox_v3_scale(ru, g->p->r)), d = prox_v3_sub(x, g->q->c);
+    double z = prox_v3_dot(d, g->ezq);
+    prox_vec3 rad = prox_v3_reject(d, g->wq);
+    double rho = prox_v3_norm(rad);
+    f[0] = rho - g->q->r;
+    f[1] = z;
+    f[2] = sqrt(f[0] * f[0] + z * z) - g->cut;
+    if (!(rho > 0.0)) {
+        f[3] = f[4] = -INFINITY;
+        f[5] = 0.0;
+        return;
+    }
+    prox_vec3 q = prox_v3_add(g->q->c, prox_v3_scale(rad, g->q->r / rho));
+    f[3] = prox_v3_dot(prox_v3_sub(q, g->p->c), g->ezp);
+    f[4] = prox_v3_dot(prox_v3_sub(q, x), ru);
+    f[5] = prox_v3_dot(prox_v3_sub(q, x), prox_v3_sub(prox_v3_scale(g->p->v, c), prox_v3_scale(g->p->u, s)));
+}
+
+/* 0 when no angle of [t0, t1] satisfies all the conditions: an f with |df/dtheta| <= L is >= (f(t0)
+ * + f(t1) - L (t1 - t0)) / 2 on the interval. x moves at speed r_P, so L = r_P for f[0..2]; q moves at
+ * most r_Q / rho_Q times as fast as x (rho_Q >= rho_lo on the interval, from f[0]), so L = r_P r_Q /
+ * rho_lo for f[3], plus the turn of u_P times |q - x| <= |q - c_P| + r_P for f[4]. Undecided
+ * intervals are halved `depth` more times. */
+static int dp_cell_span(const dp_cell *g, double t0, const double *f0, double t1, const double *f1, int depth)
+{
+    double w = t1 - t0, L = g->p->r * w;
+    for (int k = 0; k < 3; ++k)
+        if (0.5 * (f0[k] + f1[k] - L) > g->tol) return 0;
+    double rho_lo = 0.5 * (f0[0] + f1[0] - L) + g->q->r;
+    if (rho_lo > 0.0) {
+        double Lq = L * g->q->r / rho_lo;
+        if (0.5 * (f0[3] + f1[3] - Lq) > g->tol) return 0;
+        if (0.5 * (f0[4] + f1[4] - Lq - g->lq * w) > g->tol) return 0;
+        /* stationarity f[5] = 0: excluded when f[5] keeps one sign with |f[5]| above its drift */
+        double dhi = 0.5 * (f0[2] + f1[2] + L) + g->cut;
+        if (f0[5] * f1[5] > 0.0 && 0.5 * (fabs(f0[5]) + fabs(f1[5]) - L - Lq - dhi * w) > g->tol) return 0;
+    }
+    if (depth == 0) return 1;
+    double tm = 0.5 * (t0 + t1), fm[DP_NCOND];
+    dp_cell_vals(g, tm, fm);
+    return dp_cell_span(g, t0, f0, tm, fm, depth - 1) || dp_cell_span(g, tm, fm, t1, f1, depth - 1);
+}
+
+/* Certified exclusion of a cell before its degree-8 solve. At a cell minimiser with value <= cut,
+ * p1 on A's rim, p2 on B's, p1 - p2 = phi D, D in A's normal cone at p1 and -D in B's at p2 (the
+ * cones of a rim point: alpha e w + beta u, alpha, beta >= 0, u radial). Let x be the point whose
+ * partner q on the other rim Q is its closest point: x - q = dn e_Q w_Q + (rho_Q(x) - r_Q) u_Q(q), and
+ * x - q (= p1 - p2 when q = p2, = p2 - p1 when q = p1) lies in minus Q's normal cone at q and in P's
+ * normal cone at x. Hence dn <= 0 (x on the body side of Q's end plane), rho_Q(x) <= r_Q (x within
+ * Q's radius), |x - q| <= cut, e_P w_P.(q - c_P) <= 0 (q on the body side of P's end plane) and
+ * (q - x).u_P(x) <= 0. Returns 0 when a grid of the angle of x with the Lipschitz bounds of
+ * dp_cell_span proves that no point of rim P meets them all: the cell holds no minimiser at or below
+ * cut. */
+static int dp_cell_may(const prox_fcircle *p, const prox_body *kp, int ep, const prox_fcircle *q, const prox_body *kq,
+                       int eq, double cut, double tol)
+{
+    enum { N = 8, DEPTH = 6 };
+    dp_cell g = {.p = p,
+                 .q = q,
+                 .wq = kq->cyl.w,
+                 .ezq = prox_v3_scale(kq->cyl.w, (double)eq),
+                 .ezp = prox_v3_scale(kp->cyl.w, (double)ep),
+                 .cut = cut,
+                 .tol = tol,
+                 .lq = prox_v3_dist(q->c, p->c) + q->r + p->r};
+    double f0[DP_NCOND], fa[DP_NCOND], fb[DP_NCOND];
+    dp_cell_vals(&g, 0.0, f0);
+    memcpy(fa, f0, sizeof fa);
+    for (int k = 1; k <= N; ++k) {
+        double t0 = 2.0 * PROX_PI * (k - 1) / N, t1 = 2.0 * PROX_PI * k / N;
+        if (k < N) dp_cell_vals(&g, t1, fb);
+        else memcpy(fb, f0, sizeof fb);
+        if (dp_cell_span(&g, t0, fa, t1, fb, DEPTH)) return 1;
+        memcpy(fa, fb, sizeof fa);
+    }
+    return 0;
+}
+
 int sup_rcc_depth_enum(const prox_body *a, const prox_body *b, prox_signed_result *res)
 {
     dp_state s = {.a = a, .b = b, .delta = prox_v3_sub(b->c, a->c), .best = INFINITY};
@@ -183,18 +331,26 @@ int sup_rcc_depth_enum(const prox_body *a, const prox_body *b, prox_signed_resul
             double far_a, far_b, lb = dp_circle_lb(&ca, &cb, &far_a, &far_b);
             double cut = s.best + PROX_TOL_SEARCH * scale; /* a bound within rounding of the best cannot improve it */
             if (lb > cut) continue;
+            /* A's point on rim ea, B's on rim eb: each must reach the other's corner band */
+            double tol = PROX_TOL_SEARCH * scale;
+            if (!dp_reach(&cb, a, ea, s.best, tol) || !dp_reach(&ca, b, eb, s.best, tol)) continue;
             /* pairs with p2 closest on B's rim to p1: stationary points on A's rim (one degree-8
              * solve); with p1 closest on A's rim: on B's rim. The rest has p1 farthest (>= far_a)
              * or p2 farthest (>= far_b): one solve suffices when either bound exceeds the best. */
-            if (far_a > cut) ok = dp_cells_closest(&s, &cb, &ca);
-            else if (far_b > cut) ok = dp_cells_closest(&s, &ca, &cb);
-            else ok = 0;
+            if (far_a > cut) {
+                if (!dp_cell_may(&cb, b, eb, &ca, a, ea, cut, tol)) continue;
+                ok = dp_cells_closest(&s, &cb, &ca);
+            } else if (far_b > cut) {
+                if (!dp_cell_may(&ca, a, ea, &cb, b, eb, cut, tol)) continue;
+                ok = dp_cells_closest(&s, &ca, &cb);
+            } else
+                ok = 0;
             if (ok < 0) return ok; /* a circle solver failed: PROX_ENUMERIC for the caller */
         }
     res->status = PROX_OK;
     res->sd = -s.best;
     res->normal = s.best_d;
     if (!ok || !(s.best > 0.0)) return 0; /* touching band or an unsettled stratum: global search */
-    sup_witnesses(a, b, s.best_d, res->sd, &res->p1, &res->p2);
+    sup_overlap_answer(a, b, s.best_d, res);
     return 1;
 }

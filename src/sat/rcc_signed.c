@@ -10,6 +10,13 @@
 
 #include "sup_engine.h"
 
+#include <stdatomic.h>
+
+/* Overlapping pairs the enumeration could not settle, answered by the global search (rare). */
+static atomic_ullong g_depth_fallbacks;
+
+unsigned long long prox_sat_depth_fallbacks(void) { return atomic_load_explicit(&g_depth_fallbacks, memory_order_relaxed); }
+
 /* Bodies of a validated pair, both relative to A's base (exact by Sterbenz for a pair far from the
  * origin, which keeps its relative precision) and at unit scale (a power of two, exact): *o and *f
  * receive that origin and scale. */
@@ -46,6 +53,7 @@ static prox_signed_result depth_bodies(const prox_body *ba, const prox_body *bb)
     prox_signed_result r = {0};
     int rc = sup_rcc_depth_enum(ba, bb, &r);
     if (rc == 1) return r;
+    atomic_fetch_add_explicit(&g_depth_fallbacks, 1, memory_order_relaxed);
     return sup_signed_distance(ba, bb, NULL);
 }
 

@@ -36,4 +36,17 @@ prox_signed_result prox_sat_rcc_signed(const prox_rcc *a, const prox_rcc *b);
  * settled. Validates both. */
 prox_signed_result prox_sat_rcc_depth(const prox_rcc *a, const prox_rcc *b);
 
+/* Penetration depth of a box and a cylinder known to overlap: the closed-form enumeration of
+ * box_rcc_depth.c, the global search of sup_engine.c for a degenerate pose (counted below).
+ * Validates both. */
+prox_signed_result prox_sat_box_rcc_depth(const prox_box *a, const prox_rcc *b);
+
+/* How many overlapping box-cylinder pairs since start-up prox_sat_box_rcc_depth handed to the
+ * global search. */
+unsigned long long prox_sat_box_depth_fallbacks(void);
+
+/* How many overlapping cylinder pairs since start-up the depth enumeration could not settle and
+ * handed to the global search of sup_engine.c (a rare fallback; the tests and the bench read it). */
+unsigned long long prox_sat_depth_fallbacks(void);
+
 #endif

@@ -706,12 +706,67 @@ static double sets_pair(const prox_body *a, const prox_body *b, prox_vec3 n, pro
     return best;
 }
 
+/* Overlapping pairs: support sets fa (of a along n) and fb (of b along -n) lie in two planes
+ * perpendicular to n, -sd apart along n at the minimiser; seen along n (in the plane of the frame)
+ * their shadows meet, and a common point of the shadows lifted onto each set is a pair with
+ * p2 - p1 = sd n up to the planes' gap. Exact in the plane (set2_pair: points, segments, disks,
+ * rectangles), no iteration. Returns |p2 - p1 - sd n|. */
+static double overlap_set_pair(const sup_face *fa, const sup_face *fb, prox_vec3 n, double sd, prox_vec3 *p1,
+                               prox_vec3 *p2)
+{
+    frame2 F = {fa->c, prox_v3_any_perp(n), {0, 0, 0}};
+    F.v = prox_v3_cross(n, F.u);
+    set2 sa = face_2d(&F, fa), sb = face_2d(&F, fb);
+    v2 X = {0, 0}, Y = {0, 0};
+    set2_pair(&sa, &sb, &X, &Y);
+    *p1 = lift2(&F, fa, X);
+    *p2 = lift2(&F, fb, Y);
+    return prox_v3_norm(prox_v3_mad(prox_v3_sub(*p2, *p1), -sd, n));
+}
+
+/* Overlapping pairs by alternating projections between the sets (A's set and B's set moved by
+ * -sd n); two segments by their exact closest pair. Returns |p2 - p1 - sd n|. */
+static double overlap_alternating(const prox_body *a, const prox_body *b, prox_vec3 n, double sd, prox_vec3 *p1,
+                                  prox_vec3 *p2);
+
 void sup_witnesses(const prox_body *a, const prox_body *b, prox_vec3 n, double sd, prox_vec3 *p1, prox_vec3 *p2)
 {
     if (sd > 0.0) {
         sets_pair(a, b, n, p1, p2);
         return;
     }
+    /* the shadows of each reading of the support sets (exact and near-faces, as sets_pair), then
+     * alternating projections unless a shadow pair is already exact to PROX_TOL_SEARCH; the pair
+     * closest to p2 - p1 = sd n is kept */
+    double best = INFINITY;
+    sup_face fa[2] = {face_of(a, n), face_of_tol(a, n, PROX_TOL_NOISE)};
+    sup_face fb[2] = {face_of(b, prox_v3_neg(n)), face_of_tol(b, prox_v3_neg(n), PROX_TOL_NOISE)};
+    int na = fa[1].dim != fa[0].dim ? 2 : 1, nb = fb[1].dim != fb[0].dim ? 2 : 1;
+    for (int i = 0; i < na; ++i)
+        for (int j = 0; j < nb; ++j) {
+            prox_vec3 x, y;
+            double e = overlap_set_pair(&fa[i], &fb[j], n, sd, &x, &y);
+            if (e < best) best = e, *p1 = x, *p2 = y;
+        }
+    if (best <= PROX_TOL_SEARCH * (prox_v3_maxabs(*p1) + prox_v3_maxabs(*p2) + fabs(sd))) return;
+    prox_vec3 x, y;
+    if (overlap_alternating(a, b, n, sd, &x, &y) < best) *p1 = x, *p2 = y;
+}
+
+prox_vec3 sup_consistent_normal(prox_vec3 n, double sd, prox_vec3 p1, prox_vec3 p2)
+{
+    prox_vec3 m = prox_v3_sub(p1, p2);
+    double mn = prox_v3_norm(m);
+    if (!(mn > 0.0) || sd > 0.0) return n;
+    prox_vec3 u = prox_v3_scale(m, 1.0 / mn);
+    if (!(prox_v3_dot(u, n) > 1.0 - PROX_TOL_NORMAL_AGREE)) return n; /* not the same contact */
+    double en = prox_v3_norm(prox_v3_mad(m, sd, n)), eu = fabs(mn + sd);
+    return eu < en ? u : n;
+}
+
+static double overlap_alternating(const prox_body *a, const prox_body *b, prox_vec3 n, double sd, prox_vec3 *p1,
+                                  prox_vec3 *p2)
+{
     sup_face fa = face_of(a, n), fb = face_of(b, prox_v3_neg(n));
     if (fa.dim == 1 && fb.dim == 1) {
         /* two segments (two lateral lines): alternating projections converge like cos^2 of their
@@ -722,7 +777,7 @@ void sup_witnesses(const prox_body *a, const prox_body *b, prox_vec3 n, double s
                      prox_v3_mad(cb, fb.s0, fb.e0), &q1, &q2);
         *p1 = q1;
         *p2 = prox_v3_mad(q2, sd, n);
-        return;
+        return prox_v3_norm(prox_v3_mad(prox_v3_sub(*p2, *p1), -sd, n));
     }
     prox_vec3 x = fa.c, y = face_proj(&fb, prox_v3_mad(x, sd, n));
     if (fa.dim > 0 || fb.dim > 0)
@@ -735,6 +790,7 @@ void sup_witnesses(const prox_body *a, const prox_body *b, prox_vec3 n, double s
         }
     *p1 = x;
     *p2 = y;
+    return prox_v3_norm(prox_v3_mad(prox_v3_sub(y, x), -sd, n));
 }
 
 /* Snaps the best direction onto a kink it is within PROX_TOL_KINK of (cone point +-W, ridge D.w = 0),
@@ -856,6 +912,37 @@ static prox_vec3 disjoint_witnesses(const sup_search *s, prox_vec3 d0, double sd
     return n;
 }
 
+void sup_overlap_answer(const prox_body *a, const prox_body *b, prox_vec3 n0, prox_signed_result *res)
+{
+    sup_search s = {.a = a, .b = b, .delta = prox_v3_sub(b->c, a->c), .best_phi = INFINITY};
+    s.scale = fmax(prox_v3_norm(s.delta), fmax(a->size, b->size));
+    prox_vec3 cand[8];
+    int nc = 0;
+    cand[nc++] = n0;
+    cand[nc++] = n0; /* replaced by its cell polish if n0 itself is not exact (below) */
+    prox_vec3 r[6];
+    int nr = sup_ridges(a, r);
+    nr += sup_ridges(b, r + nr);
+    for (int i = 0; i < nr && nc < 8; ++i) {
+        double dw = prox_v3_dot(n0, r[i]);
+        if (fabs(dw) < PROX_TOL_KINK) cand[nc++] = polish_ridge(&s, r[i], n0);
+        else if (fabs(dw) > 1.0 - PROX_TOL_CONE) cand[nc++] = dw > 0.0 ? r[i] : prox_v3_neg(r[i]);
+    }
+    double phi0 = phi_eval(&s, n0), best = INFINITY;
+    for (int k = 0; k < nc; ++k) {
+        if (k == 1) cand[1] = polish_cell(&s, n0);
+        if (!(fabs(prox_v3_norm(cand[k]) - 1.0) < 0.5)) continue;
+        double f = k ? phi_eval(&s, cand[k]) : phi0;
+        if (!(f <= phi0 + PROX_TOL_SNAP * s.scale)) continue; /* a polish may not cost depth */
+        prox_vec3 x, y;
+        sup_witnesses(a, b, cand[k], -f, &x, &y);
+        prox_vec3 nk = sup_consistent_normal(cand[k], -f, x, y);
+        double e = prox_v3_norm(prox_v3_mad(prox_v3_sub(y, x), f, nk));
+        if (e < best) best = e, res->sd = -f, res->normal = nk, res->p1 = x, res->p2 = y;
+        if (best <= PROX_TOL_SEARCH * s.scale) return; /* exact to rounding: no other candidate can matter */
+    }
+}
+
 /* The result from the best direction found. */
 static prox_signed_result finish(sup_search *s)
 {
@@ -873,7 +960,7 @@ static prox_signed_result finish(sup_search *s)
          * loses r sqrt(eps d) of the gap. */
         res.normal = disjoint_witnesses(s, d0, res.sd, &res.p1, &res.p2);
     } else {
-        sup_witnesses(s->a, s->b, s->best_d, res.sd, &res.p1, &res.p2);
+        sup_overlap_answer(s->a, s->b, s->best_d, &res);
     }
     return res;
 }

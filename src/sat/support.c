@@ -4,6 +4,7 @@
 #include "prox/support.h"
 
 #include "sup_engine.h"
+#include "convex.h"
 
 PROX_API prox_signed_result prox_shape_signed_distance_support(const prox_shape *a, const prox_shape *b)
 {
@@ -15,6 +16,9 @@ PROX_API prox_signed_result prox_shape_signed_distance_support(const prox_shape 
     /* relative to A's centre and at unit scale (a power of two, exact): no square or product of the
      * pair's numbers can overflow or underflow */
     prox_body ba = prox_body_make(a), bb = prox_body_make(b);
+    /* the ridge search of sup_engine.c assumes centrally symmetric bodies (CYL, BOX, SPH); the added
+     * kinds take the general certified method (convex.c), which scales and translates on its own */
+    if (!prox_body_symmetric(&ba) || !prox_body_symmetric(&bb)) return prox_convex_signed(&ba, &bb);
     prox_vec3 o = ba.c;
     ba.c = prox_v3(0, 0, 0);
     bb.c = prox_v3_sub(bb.c, o);

@@ -3,14 +3,21 @@
  * title card, blank-line delimiters, comment cards, `$` comments, continuation by 5 leading blanks
  * or `&`, the shorthands nR nI xM nJ nILOG), surface cards (Sec. 3.2.2: "j n A list", j optionally
  * prefixed by * or +, n > 0 a TRn number, n < 0 a periodic partner), sphere surfaces SO S SX SY SZ
- * (Table 3-4), macrobodies RPP BOX SPH RCC (Sec. 3.2.2.4), and the TRn card (Sec. 3.3.1.7): the point
+ * (Table 3-4), the macrobodies RPP BOX SPH RCC TRC REC ELL RHP/HEX WED ARB in every card form (Sec.
+ * 3.2.2.4; docs/deck.md has the table), and the TRn card (Sec. 3.3.1.7): the point
  * r' written on a surface card lies at r = O + B r' (M = 1) or r = B (r' - O) (M = -1), where the
  * columns of B are the auxiliary axes x', y', z' in main coordinates: (B1 B2 B3) = (xx' yx' zx') etc.
  * With *TRn the B entries are angles in degrees. Patterns read: 0 entries of B (identity), 6 (x' and
  * y' axes; z' = x' cross y'), 9 (all). MCNP's other short patterns are reported as errors. B must be
  * orthonormal within 1e-3 (MCNP's own tolerance); it is then re-orthonormalised (Gram-Schmidt).
  *
- * READ card (Ch. 3, "READ card": READ FILE=name [NOECHO] [DECODE=..] [ENCODE=..], anywhere after the
+ * Columns: MCNP6 reads columns 1-128 of an input line; text beyond is cut and, unless blank or after
+ * a `$`, listed as unsupported on its line.
+ *
+ * Card layer (deck_internal.h): prox_deck_raw_read runs the same reader in "card mode": cards are
+ * kept (block, lines, text) for the cell model reader instead of turned into bodies.
+ *
+ * READ card (Ch. 3, "READ card": READ FILE=name [ECHO|NOECHO] [DECODE=..] [ENCODE=..], anywhere after the
  * title; the file's lines replace the card, its blank lines delimit blocks as usual). Design: the
  * lines are read from a stack of sources (the main deck, then each open file, at most 8 levels
  * deep); every line gets a running "virtual" number, and with prox_deck_read_file a per-line map
@@ -22,8 +29,8 @@
  * file holding the card. A cycle (the resolved path already open, compared as strings; other
  * spellings of the same file end at the depth limit), nesting deeper than 8, a missing file, a file
  * with NUL bytes, a card without FILE= and an unknown keyword are errors on the card's line; the
- * rest of the deck is still read. DECODE / ENCODE (binary files) are noted as unsupported and the
- * FILE= content is read as text; NOECHO is accepted. At most 4096 files are read per deck (a bound on
+ * rest of the deck is still read. DECODE (an encoded binary file) is noted as unsupported and the
+ * FILE= content is read as text; ECHO, NOECHO and ENCODE (the encoded copy MCNP writes) are accepted. At most 4096 files are read per deck (a bound on
  * READ fan-out). prox_deck_parse has no file context: every READ card there is an unsupported note,
  * and it never touches the filesystem. */
 #include <ctype.h>
@@ -34,11 +41,13 @@
 #include <string.h>
 
 #include "prox/deck.h"
+#include "scene/deck_internal.h"
 
 #define DECK_MAX_ENTRIES 64 /* more entries than any card read here can take */
 #define DECK_MAX_DEPTH 8    /* READ nesting levels below the main deck */
 #define DECK_MAX_READS 4096 /* files read through READ cards in one deck (bounds READ fan-out) */
 #define DECK_NAME_SHOWN 64  /* longest file name shown in a note (longer: its tail after "...") */
+#define DECK_COLUMNS 128    /* columns of an input line read (MCNP6; MCNP5 read 80) */
 
 /* ---- growable arrays ------------------------------------------------------------------------ */
 
@@ -71,14 +80,8 @@ typedef struct pending_surface {
     size_t nv;
 } pending_surface;
 
-/* A TRn card turned into a map r -> o + R r'. */
-typedef struct transform {
-    long n;
-    int line;
-    double o[3];
-    double R[3][3]; /* R[i][j]: main component i of auxiliary axis j */
-    int identity;   /* R is exactly the identity */
-} transform;
+/* A TRn card turned into a map r -> o + R r' (deck_internal.h). */
+typedef prox_deck_tr transform;
 
 /* Where a line of the expanded input comes from: a file (index into parser.files; 0 = the main
  * deck), its line there, and the line of the main deck that holds it (the top-level READ card). */
@@ -103,6 +106,8 @@ typedef struct parser {
     size_t cap_bodies, cap_errors, cap_unsup;
     pending_surface *surf;
     size_t nsurf, cap_surf;
+    size_t *surf_slot;      /* hash of surface numbers: index + 1 into surf, 0 empty (open addressing) */
+    size_t cap_slot;        /* a power of two, at least twice nsurf */
     transform *tr;
     size_t ntr, cap_tr;
     int nomem;
@@ -113,7 +118,45 @@ typedef struct parser {
     size_t nmap, cap_map;
     source stack[DECK_MAX_DEPTH + 1];
     int depth;              /* stack[0..depth] are open; stack[depth] is read */
+    prox_deck_raw *raw;     /* card mode: cards are kept here instead of read as bodies */
+    size_t cap_cards;
 } parser;
+
+/* Slot of surface number j in the hash: its own slot or the empty one where it would go. */
+static size_t surf_probe(const parser *p, long j)
+{
+    size_t mask = p->cap_slot - 1, h = ((size_t)j * (size_t)0x9e3779b97f4a7c15ULL) & mask;
+    while (p->surf_slot[h] && p->surf[p->surf_slot[h] - 1].surface != j) h = (h + 1) & mask;
+    return h;
+}
+
+/* The pending surface numbered j, or NULL: one lookup instead of a scan of every earlier surface. */
+static const pending_surface *surf_find(const parser *p, long j)
+{
+    if (!p->cap_slot) return NULL;
+    size_t k = p->surf_slot[surf_probe(p, j)];
+    return k ? &p->surf[k - 1] : NULL;
+}
+
+/* Enters surf[i] in the hash (doubling it at half load). 0 on success. */
+static int surf_enter(parser *p, size_t i)
+{
+    if (2 * (p->nsurf + 1) > p->cap_slot) {
+        size_t nc = p->cap_slot ? 2 * p->cap_slot : 64;
+        size_t *old = p->surf_slot, oc = p->cap_slot;
+        p->surf_slot = calloc(nc, sizeof *p->surf_slot);
+        if (!p->surf_slot) {
+            p->surf_slot = old;
+            return -1;
+        }
+        p->cap_slot = nc;
+        for (size_t k = 0; k < oc; ++k)
+            if (old[k]) p->surf_slot[surf_probe(p, p->surf[old[k] - 1].surface)] = old[k];
+        free(old);
+    }
+    p->surf_slot[surf_probe(p, p->surf[i].surface)] = i + 1;
+    return 0;
+}
 
 /* The origin of virtual line v (the identity for the caller's text and for line 0). */
 static line_origin origin(const parser *p, int v)
@@ -286,7 +329,7 @@ static int shorthand_count(const char *tok, const char *suffix, long *count)
 }
 
 /* Expands the entries tok[0..n) into v; on failure writes the reason to err and returns -1. */
-static int expand_entries(char **tok, size_t n, double *v, size_t *nv, char *err, size_t errsz)
+static int expand_entries(char **tok, size_t n, double *v, size_t *nv, size_t max, char *err, size_t errsz)
 {
     size_t k = 0;
     long interp = 0;  /* pending nI / nILOG count */
@@ -303,14 +346,14 @@ static int expand_entries(char **tok, size_t n, double *v, size_t *nv, char *err
                     snprintf(err, errsz, "'%ldILOG' needs positive neighbours", interp);
                     return -1;
                 }
-                if (k + (size_t)interp > DECK_MAX_ENTRIES) goto too_many;
+                if (k + (size_t)interp > max) goto too_many;
                 for (long j = 1; j <= interp; ++j) {
                     double f = (double)j / (double)(interp + 1);
                     v[k++] = interp_log ? exp(log(a) + f * (log(x) - log(a))) : a + f * (x - a);
                 }
                 interp = 0;
             }
-            if (k >= DECK_MAX_ENTRIES) goto too_many;
+            if (k >= max) goto too_many;
             v[k++] = x;
             continue;
         }
@@ -323,7 +366,7 @@ static int expand_entries(char **tok, size_t n, double *v, size_t *nv, char *err
             interp = c, interp_log = 1;
         } else if ((r = shorthand_count(t, "R", &c)) != 0) {
             if (r < 0 || !k) goto bad_shorthand;
-            if (k + (size_t)c > DECK_MAX_ENTRIES) goto too_many;
+            if (k + (size_t)c > max) goto too_many;
             for (long j = 0; j < c; ++j, ++k) v[k] = v[k - 1];
         } else if ((r = shorthand_count(t, "I", &c)) != 0) {
             if (r < 0 || !k) goto bad_shorthand;
@@ -335,7 +378,7 @@ static int expand_entries(char **tok, size_t n, double *v, size_t *nv, char *err
             size_t len = number_length(t);
             if (len && (t[len] == 'm' || t[len] == 'M') && !t[len + 1] && k) {
                 if (convert_number(t, len, &x)) goto bad_number;
-                if (k >= DECK_MAX_ENTRIES) goto too_many;
+                if (k >= max) goto too_many;
                 v[k] = x * v[k - 1];
                 ++k;
                 continue;
@@ -357,23 +400,28 @@ static int expand_entries(char **tok, size_t n, double *v, size_t *nv, char *err
     *nv = k;
     return 0;
 too_many:
-    snprintf(err, errsz, "more than %d entries", DECK_MAX_ENTRIES);
+    snprintf(err, errsz, "more than %zu entries", max);
     return -1;
 }
 
 /* ---- surface cards ---------------------------------------------------------------------------- */
 
-/* Number of entries each supported mnemonic takes; 0 for a mnemonic not read here. */
-static size_t entries_of(const char *mn)
+/* Entry counts of the body cards: the first form, and a second accepted form (0: none). MCNP6
+ * manual, Sec. 3.2.2.4 (macrobodies) and Table 3-4 (sphere surfaces). */
+static const struct body_card {
+    const char *name;
+    size_t n, n2;
+} body_cards[] = {{"RCC", 7, 0},  {"BOX", 12, 0}, {"RPP", 6, 0},  {"SPH", 4, 0},  {"TRC", 8, 0},
+                  {"REC", 12, 10}, {"ELL", 7, 0}, {"RHP", 15, 9}, {"HEX", 15, 9}, {"WED", 12, 0},
+                  {"ARB", 30, 0}, {"SO", 1, 0},   {"S", 4, 0},    {"SX", 2, 0},   {"SY", 2, 0},
+                  {"SZ", 2, 0}};
+
+/* The body card named mn (upper case), NULL for a mnemonic that is not a body. */
+static const struct body_card *body_card_of(const char *mn)
 {
-    static const struct {
-        const char *name;
-        size_t n;
-    } known[] = {{"RCC", 7}, {"BOX", 12}, {"RPP", 6}, {"SPH", 4}, {"SO", 1},
-                 {"S", 4},   {"SX", 2},   {"SY", 2},  {"SZ", 2}};
-    for (size_t i = 0; i < sizeof known / sizeof known[0]; ++i)
-        if (ieq(mn, known[i].name)) return known[i].n;
-    return 0;
+    for (size_t i = 0; i < sizeof body_cards / sizeof body_cards[0]; ++i)
+        if (!strcmp(mn, body_cards[i].name)) return &body_cards[i];
+    return NULL;
 }
 
 /* Parses "j [n] A list" and queues it (or records the error / unsupported card). */
@@ -403,8 +451,8 @@ static void surface_card(parser *p, char *text, int line)
     size_t ml = strlen(tok[k]);
     for (size_t i = 0; i < sizeof mn - 1 && i < ml; ++i) mn[i] = (char)toupper((unsigned char)tok[k][i]);
     mn[ml < sizeof mn - 1 ? ml : sizeof mn - 1] = 0;
-    size_t want = entries_of(mn);
-    if (!want) {
+    const struct body_card *bc = body_card_of(mn);
+    if (!bc) {
         if (!isalpha((unsigned char)tok[k][0]))
             add_note(p, 0, line, "surface %ld: '%s' is not a surface mnemonic", j, tok[k]);
         else
@@ -415,29 +463,36 @@ static void surface_card(parser *p, char *text, int line)
         add_note(p, 0, line, "surface %ld: periodic partner %ld is meaningless for %s", j, -n, mn);
         return;
     }
-    for (size_t i = 0; i < p->nsurf; ++i)
-        if (p->surf[i].surface == j) {
-            char at[DECK_NAME_SHOWN + 32];
-            where(p, p->surf[i].line, at, sizeof at);
-            add_note(p, 0, line, "surface %ld is already defined on %s", j, at);
-            return;
-        }
+    const pending_surface *dup = surf_find(p, j);
+    if (dup) {
+        char at[DECK_NAME_SHOWN + 32];
+        where(p, dup->line, at, sizeof at);
+        add_note(p, 0, line, "surface %ld is already defined on %s", j, at);
+        return;
+    }
     if (grow((void **)&p->surf, &p->cap_surf, p->nsurf, sizeof *p->surf)) {
         p->nomem = 1;
         return;
     }
     pending_surface *s = &p->surf[p->nsurf];
     char err[PROX_DECK_TEXT - 40];
-    if (expand_entries(tok + k + 1, nt - k - 1, s->v, &s->nv, err, sizeof err)) {
+    if (expand_entries(tok + k + 1, nt - k - 1, s->v, &s->nv, DECK_MAX_ENTRIES, err, sizeof err)) {
         add_note(p, 0, line, "surface %ld %s: %s", j, mn, err);
         return;
     }
-    if (s->nv != want) {
-        add_note(p, 0, line, "surface %ld %s: needs %zu entries, has %zu", j, mn, want, s->nv);
+    if (s->nv != bc->n && !(bc->n2 && s->nv == bc->n2)) {
+        if (bc->n2)
+            add_note(p, 0, line, "surface %ld %s: needs %zu or %zu entries, has %zu", j, mn, bc->n2, bc->n, s->nv);
+        else
+            add_note(p, 0, line, "surface %ld %s: needs %zu entries, has %zu", j, mn, bc->n, s->nv);
         return;
     }
     s->surface = j, s->line = line, s->tr = n;
     memcpy(s->card, mn, sizeof s->card);
+    if (surf_enter(p, p->nsurf)) {
+        p->nomem = 1;
+        return;
+    }
     p->nsurf++;
 }
 
@@ -473,13 +528,67 @@ static int orthonormalize(double R[3][3])
     return 0;
 }
 
+/* Builds r = o + R r' from the entries of a TRn card or an inline transform (TRCL, FILL): 3
+ * (displacement), 9 (and the x', y' axes; z' = x' cross y'), 12 (full matrix) or 13 (and M). */
+int prox_deck_make_tr(const double *v, size_t nv, int degrees, prox_deck_tr *out, char *err, size_t errsz)
+{
+    if (nv != 3 && nv != 9 && nv != 12 && nv != 13) {
+        snprintf(err, errsz, "%zu entries; prox reads 3 (displacement), 9 (and x', y' axes), 12 (full matrix) "
+                 "or 13 (and M)", nv);
+        return -1;
+    }
+    transform t = {.o = {v[0], v[1], v[2]}, .identity = nv == 3};
+    double R[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (size_t e = 3; e < nv && e < 12; ++e) {
+        size_t col = (e - 3) / 3, row = (e - 3) % 3;
+        R[row][col] = degrees ? cos_deg(v[e]) : v[e];
+    }
+    if (nv == 9) { /* z' = x' cross y' */
+        prox_vec3 z = prox_v3_cross(prox_v3(R[0][0], R[1][0], R[2][0]), prox_v3(R[0][1], R[1][1], R[2][1]));
+        R[0][2] = z.x, R[1][2] = z.y, R[2][2] = z.z;
+    }
+    if (nv > 3 && orthonormalize(R)) {
+        snprintf(err, errsz, "rotation matrix is not orthonormal within 1e-3");
+        return -1;
+    }
+    double m = nv == 13 ? v[12] : 1.0;
+    if (m != 1.0 && m != -1.0) {
+        snprintf(err, errsz, "M must be 1 or -1, not %g", m);
+        return -1;
+    }
+    memcpy(t.R, R, sizeof R);
+    if (m < 0) { /* O is the main origin in auxiliary coordinates: r = R (r' - O) = R r' - R O */
+        double o2[3];
+        for (int i = 0; i < 3; ++i) o2[i] = -(R[i][0] * t.o[0] + R[i][1] * t.o[1] + R[i][2] * t.o[2]);
+        memcpy(t.o, o2, sizeof o2);
+    }
+    if (!t.identity) {
+        t.identity = 1;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) t.identity &= R[i][j] == (i == j ? 1.0 : 0.0);
+    }
+    *out = t;
+    return 0;
+}
+
 /* Parses a TRn / *TRn card (tok[0] is its name). */
 static void tr_card(parser *p, char **tok, size_t nt, int line)
 {
     const char *name = tok[0];
     int degrees = *name == '*';
     long n;
-    if (parse_long(name + degrees + 2, &n) || n < 1 || !isdigit((unsigned char)name[degrees + 2])) {
+    size_t len = strlen(name);
+    /* TRn* is read as *TRn (rotation in degrees): a spelling real decks use that MCNP accepts. */
+    char num[32];
+    size_t off = (size_t)degrees + 2, nlen = len > off ? len - off : 0;
+    if (!degrees && nlen > 1 && name[len - 1] == '*') degrees = 1, --nlen;
+    if (nlen == 0 || nlen >= sizeof num) {
+        add_note(p, 0, line, "'%s': transformation number must be a positive integer", name);
+        return;
+    }
+    memcpy(num, name + off, nlen);
+    num[nlen] = '\0';
+    if (parse_long(num, &n) || n < 1 || !isdigit((unsigned char)num[0])) {
         add_note(p, 0, line, "'%s': transformation number must be a positive integer", name);
         return;
     }
@@ -493,46 +602,16 @@ static void tr_card(parser *p, char **tok, size_t nt, int line)
     double v[DECK_MAX_ENTRIES];
     size_t nv;
     char err[PROX_DECK_TEXT - 40];
-    if (expand_entries(tok + 1, nt - 1, v, &nv, err, sizeof err)) {
+    if (expand_entries(tok + 1, nt - 1, v, &nv, DECK_MAX_ENTRIES, err, sizeof err)) {
         add_note(p, 0, line, "TR%ld: %s", n, err);
         return;
     }
-    if (nv != 3 && nv != 9 && nv != 12 && nv != 13) {
-        add_note(p, 0, line,
-                 "TR%ld: %zu entries; prox reads 3 (displacement), 9 (and x', y' axes), 12 (full matrix) "
-                 "or 13 (and M)", n, nv);
+    transform t;
+    if (prox_deck_make_tr(v, nv, degrees, &t, err, sizeof err)) {
+        add_note(p, 0, line, "TR%ld: %s", n, err);
         return;
     }
-    transform t = {.n = n, .line = line, .o = {v[0], v[1], v[2]}, .identity = nv == 3};
-    double R[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    for (size_t e = 3; e < nv && e < 12; ++e) {
-        size_t col = (e - 3) / 3, row = (e - 3) % 3;
-        R[row][col] = degrees ? cos_deg(v[e]) : v[e];
-    }
-    if (nv == 9) { /* z' = x' cross y' */
-        prox_vec3 z = prox_v3_cross(prox_v3(R[0][0], R[1][0], R[2][0]), prox_v3(R[0][1], R[1][1], R[2][1]));
-        R[0][2] = z.x, R[1][2] = z.y, R[2][2] = z.z;
-    }
-    if (nv > 3 && orthonormalize(R)) {
-        add_note(p, 0, line, "TR%ld: rotation matrix is not orthonormal within 1e-3", n);
-        return;
-    }
-    double m = nv == 13 ? v[12] : 1.0;
-    if (m != 1.0 && m != -1.0) {
-        add_note(p, 0, line, "TR%ld: M must be 1 or -1, not %g", n, m);
-        return;
-    }
-    memcpy(t.R, R, sizeof R);
-    if (m < 0) { /* O is the main origin in auxiliary coordinates: r = R (r' - O) = R r' - R O */
-        double o2[3];
-        for (int i = 0; i < 3; ++i) o2[i] = -(R[i][0] * t.o[0] + R[i][1] * t.o[1] + R[i][2] * t.o[2]);
-        memcpy(t.o, o2, sizeof o2);
-    }
-    if (!t.identity) {
-        t.identity = 1;
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) t.identity &= R[i][j] == (i == j ? 1.0 : 0.0);
-    }
+    t.n = n, t.line = line;
     if (grow((void **)&p->tr, &p->cap_tr, p->ntr, sizeof *p->tr)) {
         p->nomem = 1;
         return;
@@ -567,42 +646,111 @@ static int axis_permutation(const transform *t)
     return 1;
 }
 
-/* The solid of a pending surface in the global frame. */
-static prox_shape place(const pending_surface *s, const transform *t)
+static prox_vec3 v3at(const double *v, size_t i) { return prox_v3(v[i], v[i + 1], v[i + 2]); }
+
+/* The solid of a body card in its own frame (MCNP6 manual, Sec. 3.2.2.4): the card's entries
+ * become the stored form; the second card forms go through the constructors of shapes.h. Returns
+ * PROX_OK or the status naming the fault. */
+static prox_status local_shape(const char *c, const double *v, size_t nv, prox_shape *out)
 {
-    const double *v = s->v;
-    const char *c = s->card;
-    prox_sph sph = {prox_v3(0, 0, 0), 0};
-    if (!strcmp(c, "RCC")) {
-        prox_rcc r = {tr_point(t, prox_v3(v[0], v[1], v[2])), tr_vec(t, prox_v3(v[3], v[4], v[5])), v[6]};
-        return prox_shape_from_rcc(r);
-    }
-    if (!strcmp(c, "BOX")) {
-        prox_box b = {tr_point(t, prox_v3(v[0], v[1], v[2])),
-                      {tr_vec(t, prox_v3(v[3], v[4], v[5])), tr_vec(t, prox_v3(v[6], v[7], v[8])),
-                       tr_vec(t, prox_v3(v[9], v[10], v[11]))}};
-        return prox_shape_from_box(b);
-    }
-    if (!strcmp(c, "RPP")) {
-        prox_rpp r = {v[0], v[1], v[2], v[3], v[4], v[5]};
+    prox_status st = PROX_OK;
+    if (!strcmp(c, "RCC")) *out = prox_shape_from_rcc((prox_rcc){v3at(v, 0), v3at(v, 3), v[6]});
+    else if (!strcmp(c, "BOX")) *out = prox_shape_from_box((prox_box){v3at(v, 0), {v3at(v, 3), v3at(v, 6), v3at(v, 9)}});
+    else if (!strcmp(c, "RPP")) *out = prox_shape_from_rpp((prox_rpp){v[0], v[1], v[2], v[3], v[4], v[5]});
+    else if (!strcmp(c, "SPH") || !strcmp(c, "S")) *out = prox_shape_from_sph((prox_sph){v3at(v, 0), v[3]});
+    else if (!strcmp(c, "SO")) *out = prox_shape_from_sph((prox_sph){prox_v3(0, 0, 0), v[0]});
+    else if (!strcmp(c, "SX")) *out = prox_shape_from_sph((prox_sph){prox_v3(v[0], 0, 0), v[1]});
+    else if (!strcmp(c, "SY")) *out = prox_shape_from_sph((prox_sph){prox_v3(0, v[0], 0), v[1]});
+    else if (!strcmp(c, "SZ")) *out = prox_shape_from_sph((prox_sph){prox_v3(0, 0, v[0]), v[1]});
+    else if (!strcmp(c, "TRC")) *out = prox_shape_from_trc((prox_trc){v3at(v, 0), v3at(v, 3), v[6], v[7]});
+    else if (!strcmp(c, "REC")) {
+        prox_rec r = {v3at(v, 0), v3at(v, 3), v3at(v, 6), prox_v3(0, 0, 0)};
+        if (nv == 12) r.a2 = v3at(v, 9);
+        else st = prox_rec_from_radius(r.base, r.axis, r.a1, v[9], &r); /* minor radius form */
+        *out = prox_shape_from_rec(r);
+    } else if (!strcmp(c, "ELL")) {
+        /* R > 0: foci v1, v2 and major radius R; R < 0: centre v1, major semi-axis v2, minor |R| */
+        prox_ell e = {0};
+        if (v[6] > 0) st = prox_ell_from_foci(v3at(v, 0), v3at(v, 3), v[6], &e);
+        else if (v[6] < 0) st = prox_ell_from_axis(v3at(v, 0), v3at(v, 3), -v[6], &e);
+        else st = PROX_EINVAL_RADIUS;
+        *out = prox_shape_from_ell(e);
+    } else if (!strcmp(c, "RHP") || !strcmp(c, "HEX")) {
+        prox_rhp h = {v3at(v, 0), v3at(v, 3), {v3at(v, 6), prox_v3(0, 0, 0), prox_v3(0, 0, 0)}};
+        if (nv == 15) h.r[1] = v3at(v, 9), h.r[2] = v3at(v, 12);
+        else st = prox_rhp_regular(h.base, h.axis, h.r[0], &h);
+        *out = prox_shape_from_rhp(h);
+    } else if (!strcmp(c, "WED")) *out = prox_shape_from_wed((prox_wed){v3at(v, 0), v3at(v, 3), v3at(v, 6), v3at(v, 9)});
+    else if (!strcmp(c, "ARB")) {
+        prox_arb a;
+        for (int i = 0; i < 8; ++i) a.corner[i] = v3at(v, 3 * (size_t)i);
+        for (int i = 0; i < 6; ++i) {
+            double f = v[24 + i];
+            if (!(f >= 0 && f <= 8888 && f == floor(f))) return PROX_EINVAL_ARB_FACE;
+            a.face[i] = (int)f;
+        }
+        *out = prox_shape_from_arb(a);
+    } else return PROX_EINVAL_ARG;
+    return st != PROX_OK ? st : prox_shape_validate(out);
+}
+
+/* The shape moved by t: points through o + R p, vectors through R v. An RPP stays an RPP under an
+ * axis permutation and becomes a BOX under any other rotation. */
+static prox_shape move_shape(prox_shape s, const transform *t)
+{
+    if (!t) return s;
+    prox_vec3 *pts[8] = {0}, *vecs[4] = {0};
+    switch (s.kind) {
+    case PROX_SHAPE_RCC: pts[0] = &s.u.rcc.base, vecs[0] = &s.u.rcc.axis; break;
+    case PROX_SHAPE_BOX: pts[0] = &s.u.box.corner; for (int i = 0; i < 3; ++i) vecs[i] = &s.u.box.edge[i]; break;
+    case PROX_SHAPE_SPH: pts[0] = &s.u.sph.center; break;
+    case PROX_SHAPE_TRC: pts[0] = &s.u.trc.base, vecs[0] = &s.u.trc.axis; break;
+    case PROX_SHAPE_REC: pts[0] = &s.u.rec.base, vecs[0] = &s.u.rec.axis, vecs[1] = &s.u.rec.a1, vecs[2] = &s.u.rec.a2; break;
+    case PROX_SHAPE_ELL: pts[0] = &s.u.ell.center, vecs[0] = &s.u.ell.axis; break;
+    case PROX_SHAPE_RHP: pts[0] = &s.u.rhp.base, vecs[0] = &s.u.rhp.axis; for (int i = 0; i < 3; ++i) vecs[1 + i] = &s.u.rhp.r[i]; break;
+    case PROX_SHAPE_WED: pts[0] = &s.u.wed.vertex, vecs[0] = &s.u.wed.v1, vecs[1] = &s.u.wed.v2, vecs[2] = &s.u.wed.v3; break;
+    case PROX_SHAPE_ARB: for (int i = 0; i < 8; ++i) pts[i] = &s.u.arb.corner[i]; break;
+    case PROX_SHAPE_RPP: {
+        prox_rpp r = s.u.rpp;
         if (!axis_permutation(t)) {
             prox_box b = prox_rpp_to_box(&r);
-            b.corner = tr_point(t, b.corner);
-            for (int i = 0; i < 3; ++i) b.edge[i] = tr_vec(t, b.edge[i]);
-            return prox_shape_from_box(b);
+            return move_shape(prox_shape_from_box(b), t);
         }
-        if (prox_rpp_validate(&r) != PROX_OK) return prox_shape_from_rpp(r); /* reported by caller */
         prox_vec3 a = tr_point(t, prox_v3(r.xmin, r.ymin, r.zmin)), b = tr_point(t, prox_v3(r.xmax, r.ymax, r.zmax));
         prox_rpp q = {fmin(a.x, b.x), fmax(a.x, b.x), fmin(a.y, b.y), fmax(a.y, b.y), fmin(a.z, b.z), fmax(a.z, b.z)};
         return prox_shape_from_rpp(q);
     }
-    if (!strcmp(c, "SPH") || !strcmp(c, "S")) sph = (prox_sph){prox_v3(v[0], v[1], v[2]), v[3]};
-    else if (!strcmp(c, "SO")) sph.radius = v[0];
-    else if (!strcmp(c, "SX")) sph = (prox_sph){prox_v3(v[0], 0, 0), v[1]};
-    else if (!strcmp(c, "SY")) sph = (prox_sph){prox_v3(0, v[0], 0), v[1]};
-    else sph = (prox_sph){prox_v3(0, 0, v[0]), v[1]}; /* SZ */
-    sph.center = tr_point(t, sph.center);
-    return prox_shape_from_sph(sph);
+    default: break;
+    }
+    for (int i = 0; i < 8; ++i)
+        if (pts[i]) *pts[i] = tr_point(t, *pts[i]);
+    for (int i = 0; i < 4; ++i)
+        if (vecs[i]) *vecs[i] = tr_vec(t, *vecs[i]);
+    return s;
+}
+
+int prox_deck_body_shape(const char *mn, const double *v, size_t nv, const prox_deck_tr *t, prox_shape *out,
+                         char *err, size_t errsz)
+{
+    const struct body_card *bc = body_card_of(mn);
+    if (!bc) return 1;
+    if (nv != bc->n && !(bc->n2 && nv == bc->n2)) {
+        if (bc->n2) snprintf(err, errsz, "needs %zu or %zu entries, has %zu", bc->n2, bc->n, nv);
+        else snprintf(err, errsz, "needs %zu entries, has %zu", bc->n, nv);
+        return -1;
+    }
+    prox_shape local;
+    prox_status st = local_shape(mn, v, nv, &local);
+    if (st == PROX_OK) {
+        local = move_shape(local, t);
+        st = prox_shape_validate(&local);
+    }
+    if (st != PROX_OK) {
+        snprintf(err, errsz, "%s", prox_status_str(st));
+        return -1;
+    }
+    *out = local;
+    return 0;
 }
 
 /* Validates the shape of a pending surface in its own frame, then places it. */
@@ -617,14 +765,10 @@ static void resolve_surface(parser *p, const pending_surface *s)
             return;
         }
     }
-    prox_shape local = place(s, NULL);
-    prox_status st = prox_shape_validate(&local);
-    if (st == PROX_OK) {
-        local = place(s, t);
-        st = prox_shape_validate(&local);
-    }
-    if (st != PROX_OK) {
-        add_note(p, 0, s->line, "surface %ld %s: %s", s->surface, s->card, prox_status_str(st));
+    prox_shape local;
+    char err[PROX_DECK_TEXT - 40];
+    if (prox_deck_body_shape(s->card, s->v, s->nv, t, &local, err, sizeof err)) {
+        add_note(p, 0, s->line, "surface %ld %s: %s", s->surface, s->card, err);
         return;
     }
     prox_deck *d = p->deck;
@@ -696,10 +840,33 @@ static int card_append(card *c, const char *s, size_t n)
     return 0;
 }
 
+/* Card mode: keeps a copy of the card (block, lines, text) for the cell model reader. */
+static void keep_card(parser *p, const card *c, int block)
+{
+    prox_deck_raw *r = p->raw;
+    if (grow((void **)&r->cards, &p->cap_cards, r->ncards, sizeof *r->cards)) {
+        p->nomem = 1;
+        return;
+    }
+    char *t = malloc(c->len + 1);
+    if (!t) {
+        p->nomem = 1;
+        return;
+    }
+    memcpy(t, c->text, c->len + 1);
+    line_origin o = origin(p, c->line);
+    r->cards[r->ncards++] = (prox_deck_card){
+        .block = block == B_CELLS ? PROX_CARD_CELL : block == B_SURFACES ? PROX_CARD_SURFACE : PROX_CARD_DATA,
+        .line = o.top, .fline = o.line, .file = o.file, .text = t};
+}
+
 /* Hands a finished card to the block's reader. */
 static void flush_card(parser *p, card *c, int block)
 {
-    if (c->line && c->len) {
+    if (c->line && c->len && p->raw && block >= B_CELLS && block <= B_DATA) {
+        keep_card(p, c, block);
+        if (block == B_DATA) data_card(p, c->text, c->line);
+    } else if (c->line && c->len) {
         if (block == B_CELLS) cell_card(p, c->text, c->line);
         else if (block == B_SURFACES) surface_card(p, c->text, c->line);
         else if (block == B_DATA) data_card(p, c->text, c->line);
@@ -755,6 +922,20 @@ static int feed_line(parser *p, card *c, int *amp, char *s, size_t n, int line, 
     }
     *amp = cont_amp;
     return card_append(c, s, n);
+}
+
+/* Cuts a card line at column DECK_COLUMNS (MCNP6 reads columns 1-128 of an input line; text beyond
+ * is not part of the card). Text cut off, unless it follows a `$`, is listed as unsupported on its
+ * line: never dropped silently. Returns the new length. */
+static size_t column_limit(parser *p, char *buf, size_t m, int line)
+{
+    if (m <= DECK_COLUMNS) return m;
+    int text = 0;
+    for (size_t i = DECK_COLUMNS; i < m; ++i) text |= !isspace((unsigned char)buf[i]);
+    if (text && !memchr(buf, '$', DECK_COLUMNS))
+        add_note(p, 1, line, "text beyond column %d ignored: '%.20s'", DECK_COLUMNS, buf + DECK_COLUMNS);
+    buf[DECK_COLUMNS] = 0;
+    return DECK_COLUMNS;
 }
 
 /* ---- READ cards: files inserted in place of the card ------------------------------------------ */
@@ -924,9 +1105,11 @@ static void read_card(parser *p, char *s, size_t n, int v)
                 return;
             }
             file = val;
-        } else if (kl < sizeof kw && !strcmp(kw, "NOECHO")) {
+        } else if (kl < sizeof kw && (!strcmp(kw, "NOECHO") || !strcmp(kw, "ECHO"))) {
             /* echo control of the output file: nothing to do here */
-        } else if (kl < sizeof kw && (!strcmp(kw, "DECODE") || !strcmp(kw, "ENCODE"))) {
+        } else if (kl < sizeof kw && !strcmp(kw, "ENCODE")) {
+            /* names the encoded copy MCNP writes of FILE=; the input is FILE= itself, as text */
+        } else if (kl < sizeof kw && !strcmp(kw, "DECODE")) {
             add_note(p, 1, v, "READ %s=%.60s: binary files are not read (FILE= is read as text)", kw,
                      val ? val : "");
         } else {
@@ -1067,6 +1250,7 @@ static void read_blocks(parser *p, const char *text)
             continue;
         }
         if (is_comment(buf, m)) continue;
+        m = column_limit(p, buf, m, line);
         if (!amp && is_read_card(buf, m)) { /* ends the card before it; its file comes next */
             flush_card(p, &c, block);
             read_card(p, buf, m, line);
@@ -1090,12 +1274,70 @@ static prox_status run(parser *p, const char *text)
     read_blocks(p, text);
     for (size_t i = 0; i < p->nsurf && !p->nomem; ++i) resolve_surface(p, &p->surf[i]);
     free(p->surf);
-    free(p->tr);
+    free(p->surf_slot);
     free(p->map);
+    if (p->raw) { /* card mode: the transforms and file names go to the caller */
+        p->raw->trs = p->tr, p->raw->ntrs = p->ntr;
+        p->raw->files = p->files, p->raw->nfiles = p->nfiles;
+        return p->nomem ? PROX_ENOMEM : PROX_OK;
+    }
+    free(p->tr);
     for (size_t i = 0; i < p->nfiles; ++i) free(p->files[i]);
     free(p->files);
     return p->nomem ? PROX_ENOMEM : PROX_OK;
 }
+
+/* Reads `text` (or the file at `path` when text is NULL) in the given parser. */
+static prox_status read_deck(parser *p, const char *text, const char *path)
+{
+    if (text) return run(p, text);
+    p->with_files = 1;
+    char *owned = NULL;
+    int r = load_file(path, &owned);
+    if (r) {
+        if (r < 0) return PROX_ENOMEM;
+        add_note(p, 0, 0, r == 1 ? "cannot read '%s'" : "'%s' holds NUL bytes: not a text deck", path);
+        return p->nomem ? PROX_ENOMEM : PROX_OK;
+    }
+    char *name = copy_string(path, strlen(path));
+    if (!name || add_file(p, name) < 0) {
+        free(owned);
+        free(p->files);
+        return PROX_ENOMEM;
+    }
+    prox_status st = run(p, owned);
+    free(owned);
+    return st;
+}
+
+prox_status prox_deck_raw_read(const char *text, const char *path, prox_deck_raw *raw)
+{
+    if (!raw || (!text && !path)) return PROX_EINVAL_ARG;
+    parser p = {.deck = &raw->deck, .raw = raw};
+    return read_deck(&p, text, path);
+}
+
+void prox_deck_raw_free(prox_deck_raw *raw)
+{
+    if (!raw) return;
+    prox_deck_free(&raw->deck);
+    for (size_t i = 0; i < raw->ncards; ++i) free(raw->cards[i].text);
+    free(raw->cards);
+    free(raw->trs);
+    for (size_t i = 0; i < raw->nfiles; ++i) free(raw->files[i]);
+    free(raw->files);
+    memset(raw, 0, sizeof *raw);
+}
+
+int prox_deck_entries(char **tok, size_t n, double *v, size_t *nv, size_t max, char *err, size_t errsz)
+{
+    return expand_entries(tok, n, v, nv, max, err, errsz);
+}
+int prox_deck_long(const char *s, long *out) { return parse_long(s, out); }
+int prox_deck_number(const char *s, double *out) { return parse_number(s, out); }
+int prox_deck_ieq(const char *a, const char *b) { return ieq(a, b); }
+prox_vec3 prox_deck_tr_point(const prox_deck_tr *t, prox_vec3 v) { return tr_point(t, v); }
+prox_vec3 prox_deck_tr_vec(const prox_deck_tr *t, prox_vec3 v) { return tr_vec(t, v); }
 
 PROX_API prox_status prox_deck_parse(const char *text, prox_deck *deck)
 {
@@ -1107,23 +1349,8 @@ PROX_API prox_status prox_deck_parse(const char *text, prox_deck *deck)
 PROX_API prox_status prox_deck_read_file(const char *path, prox_deck *deck)
 {
     if (!path || !deck) return PROX_EINVAL_ARG;
-    parser p = {.deck = deck, .with_files = 1};
-    char *text = NULL;
-    int r = load_file(path, &text);
-    if (r) {
-        if (r < 0) return PROX_ENOMEM;
-        add_note(&p, 0, 0, r == 1 ? "cannot read '%s'" : "'%s' holds NUL bytes: not a text deck", path);
-        return p.nomem ? PROX_ENOMEM : PROX_OK;
-    }
-    char *name = copy_string(path, strlen(path));
-    if (!name || add_file(&p, name) < 0) {
-        free(text);
-        free(p.files);
-        return PROX_ENOMEM;
-    }
-    prox_status st = run(&p, text);
-    free(text);
-    return st;
+    parser p = {.deck = deck};
+    return read_deck(&p, NULL, path);
 }
 
 PROX_API void prox_deck_free(prox_deck *deck)

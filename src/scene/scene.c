@@ -1,17 +1,21 @@
 /* Scenes, query modes and the batch API (include/prox/scene.h, docs/scene.md).
- * Broad phase: sort-and-sweep over axis-aligned boxes (Baraff 1992; Ericson, Real-Time Collision
- * Detection, Sec. 7.5.1) along the axis of largest spread of the box centres. Narrow phase: a ladder
+ * Broad phase: a bounding volume hierarchy over the axis-aligned boxes (src/scene/broad.c) hands on
+ * every pair whose boxes come within the threshold on all three axes. Narrow phase: a ladder
  * of bounds, cheapest first: box gap and bounding-sphere gap (lower bounds on the distance), the
  * support-function gap along the line of centres, -h_B(-n) - h_A(n) <= dist(A, B) (a lower bound:
  * the slab of A and the slab of B along n are disjoint by that much), and |s_A(n) - s_B(-n)| >=
  * dist(A, B) (an upper bound: any two points of the solids), then the solvers of query.h. */
+#include <stdatomic.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/body.h"
+#include "core/tol.h"
 #include "prox/scene.h"
 #include "prox/support.h"
 #include "query/query_internal.h"
+#include "scene/broad.h"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -19,9 +23,11 @@
 
 /* Relative slack of the bound tests: a bound only rejects a pair when it clears the threshold by
  * more than rounding can explain. */
-#define SCENE_SLACK 1e-13
+#define SCENE_SLACK PROX_TOL_BROAD
 /* Candidates evaluated per parallel chunk (bounds the memory of a query). */
 #define SCENE_CHUNK 65536
+/* Candidates a worker of the ladder takes at once. */
+#define SCENE_GRAIN 64
 
 /* ---- bounding volumes ------------------------------------------------------------------------ */
 
@@ -60,6 +66,49 @@ static prox_aabb aabb_box(const prox_box *x)
     return b;
 }
 
+/* Distance from a body's reference point c to its farthest point (kinds after the first four). */
+static double body_extent(const prox_body *b)
+{
+    switch (b->kind) {
+    case PROX_BODY_POLY: {
+        double r = 0.0;
+        for (int i = 0; i < b->x.poly.nv; ++i) r = fmax(r, prox_v3_norm(b->x.poly.v[i]));
+        return r;
+    }
+    case PROX_BODY_CONE: return fmax(hypot(b->x.cone.hh, b->x.cone.r1), hypot(b->x.cone.hh, b->x.cone.r2));
+    case PROX_BODY_ECYL: return hypot(b->x.ecyl.hh, fmax(b->x.ecyl.a1, b->x.ecyl.a2));
+    case PROX_BODY_ELL: return fmax(b->x.ell.a, b->x.ell.b);
+    default: return b->size;
+    }
+}
+
+/* Box of any kind from the generic body: h(+-e_k) = +-c_k + hc(+-e_k) along the three axes, enlarged
+ * by PROX_TOL_BOUND (|c| + extent) for the rounding of c, of the geometry and of hc. */
+static prox_aabb aabb_body(const prox_shape *s)
+{
+    prox_body b = prox_body_make(s);
+    double up[3], down[3], reach = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        prox_vec3 e = prox_v3(k == 0, k == 1, k == 2);
+        up[k] = prox_body_hc(&b, e);
+        down[k] = prox_body_hc(&b, prox_v3_neg(e));
+        reach = fmax(reach, fmax(fabs(up[k]), fabs(down[k])));
+    }
+    double w = PROX_TOL_BOUND * (prox_v3_maxabs(b.c) + reach);
+    prox_aabb box = {prox_v3(b.c.x - down[0] - w, b.c.y - down[1] - w, b.c.z - down[2] - w),
+                     prox_v3(b.c.x + up[0] + w, b.c.y + up[1] + w, b.c.z + up[2] + w)};
+    return box;
+}
+
+/* Sphere of any kind from the generic body: centre c, radius the farthest extent, enlarged like the box. */
+static prox_sph sphere_body(const prox_shape *s)
+{
+    prox_body b = prox_body_make(s);
+    double r = body_extent(&b);
+    prox_sph out = {b.c, r + PROX_TOL_BOUND * (prox_v3_maxabs(b.c) + r)};
+    return out;
+}
+
 PROX_API prox_aabb prox_shape_aabb(const prox_shape *s)
 {
     prox_aabb b = {prox_v3(0, 0, 0), prox_v3(0, 0, 0)};
@@ -76,6 +125,7 @@ PROX_API prox_aabb prox_shape_aabb(const prox_shape *s)
         b.hi = prox_v3_add(s->u.sph.center, prox_v3(r, r, r));
         break;
     }
+    default: return aabb_body(s);
     }
     return aabb_widen(b);
 }
@@ -102,6 +152,7 @@ PROX_API prox_sph prox_shape_bounding_sphere(const prox_shape *s)
         break;
     }
     case PROX_SHAPE_SPH: return s->u.sph;
+    default: return sphere_body(s);
     }
     out.radius *= 1.0 + 4e-16; /* rounding must not shrink it */
     out.radius += 4e-16 * prox_v3_maxabs(out.center);
@@ -358,11 +409,9 @@ PROX_API void prox_scene_report_free(prox_scene_report *r)
 }
 
 /* A candidate pair (indices a < b). */
-typedef struct cand {
-    size_t a, b;
-} cand;
+typedef prox_broad_pair cand;
 
-/* Growable list of candidates or reported pairs. */
+/* Growable list of candidates. */
 static int push_cand(cand **v, size_t *n, size_t *cap, size_t a, size_t b)
 {
     if (*n == *cap) {
@@ -375,40 +424,20 @@ static int push_cand(cand **v, size_t *n, size_t *cap, size_t a, size_t b)
     return 0;
 }
 
-/* Sort key of the sweep. */
-typedef struct sweep_key {
+/* Sort key of the nearest pair's first bound. */
+typedef struct near_key {
     double lo;
     size_t idx;
-} sweep_key;
+} near_key;
 
 static int cmp_key(const void *x, const void *y)
 {
-    const sweep_key *a = x, *b = y;
+    const near_key *a = x, *b = y;
     if (a->lo != b->lo) return a->lo < b->lo ? -1 : 1;
     return a->idx < b->idx ? -1 : (a->idx > b->idx);
 }
 
-/* Component k of a vector. */
-static double comp(prox_vec3 v, int k) { return k == 0 ? v.x : (k == 1 ? v.y : v.z); }
-
-/* The axis along which the box centres spread most. */
-static int sweep_axis(const prox_scene *s)
-{
-    double sum[3] = {0}, sum2[3] = {0}, best = -1;
-    int ax = 0;
-    for (size_t i = 0; i < s->n; ++i)
-        for (int k = 0; k < 3; ++k) {
-            double c = 0.5 * (comp(s->bounds[i].box.lo, k) + comp(s->bounds[i].box.hi, k));
-            sum[k] += c, sum2[k] += c * c;
-        }
-    for (int k = 0; k < 3; ++k) {
-        double var = sum2[k] - sum[k] * sum[k] / (double)s->n;
-        if (var > best) best = var, ax = k;
-    }
-    return ax;
-}
-
-/* Largest coordinate magnitude of the scene: scales the slack of the sweep. */
+/* Largest coordinate magnitude of the scene: scales the slack of the broad phase. */
 static double scene_scale(const prox_scene *s)
 {
     double m = 0;
@@ -417,38 +446,14 @@ static double scene_scale(const prox_scene *s)
     return m;
 }
 
-/* Sort-and-sweep: every pair whose boxes are within `cut` on all three axes. */
-static int sweep(const prox_scene *s, double cut, cand **out, size_t *nout)
+/* Broad phase: every pair whose boxes are within `cut` (plus twice the ladder's slack at the scene's
+ * scale) on all three axes, sorted by (a, b) (src/scene/broad.c). */
+static int broad(const prox_scene *s, double cut, cand **out, size_t *nout)
 {
-    size_t n = s->n, cap = 0;
     *out = NULL, *nout = 0;
-    if (n < 2) return 0;
-    int ax = sweep_axis(s), a1 = (ax + 1) % 3, a2 = (ax + 2) % 3;
+    if (s->n < 2) return 0; /* (no bounds array to point into when the scene is empty) */
     double c = cut + 2 * SCENE_SLACK * scene_scale(s);
-    sweep_key *key = malloc(n * sizeof *key);
-    double *lo = malloc(3 * n * sizeof *lo), *hi = malloc(3 * n * sizeof *hi);
-    int fail = !key || !lo || !hi;
-    if (!fail) {
-        for (size_t i = 0; i < n; ++i) key[i] = (sweep_key){comp(s->bounds[i].box.lo, ax), i};
-        qsort(key, n, sizeof *key, cmp_key);
-        for (size_t i = 0; i < n; ++i) { /* sorted structure of arrays: the inner loop reads 6 doubles */
-            const prox_aabb *b = &s->bounds[key[i].idx].box;
-            lo[3 * i] = comp(b->lo, ax), lo[3 * i + 1] = comp(b->lo, a1), lo[3 * i + 2] = comp(b->lo, a2);
-            hi[3 * i] = comp(b->hi, ax), hi[3 * i + 1] = comp(b->hi, a1), hi[3 * i + 2] = comp(b->hi, a2);
-        }
-    }
-    for (size_t i = 0; i < n && !fail; ++i) {
-        double lim = hi[3 * i] + c;
-        for (size_t j = i + 1; j < n && lo[3 * j] <= lim; ++j) {
-            if (lo[3 * j + 1] > hi[3 * i + 1] + c || lo[3 * i + 1] > hi[3 * j + 1] + c) continue;
-            if (lo[3 * j + 2] > hi[3 * i + 2] + c || lo[3 * i + 2] > hi[3 * j + 2] + c) continue;
-            if (push_cand(out, nout, &cap, key[i].idx, key[j].idx)) fail = 1;
-        }
-    }
-    free(key);
-    free(lo);
-    free(hi);
-    return fail ? -1 : 0;
+    return prox_broad_pairs(&s->bounds[0].box, sizeof *s->bounds, s->n, c, prox_par_threads(s->threads), out, nout);
 }
 
 /* Every pair of the scene as candidates (naive reference, or an infinite threshold). */
@@ -460,13 +465,6 @@ static int all_pairs(const prox_scene *s, cand **out, size_t *nout)
         for (size_t j = i + 1; j < s->n; ++j)
             if (push_cand(out, nout, &cap, i, j)) return -1;
     return 0;
-}
-
-static int cmp_cand(const void *x, const void *y)
-{
-    const cand *a = x, *b = y;
-    if (a->a != b->a) return a->a < b->a ? -1 : 1;
-    return a->b < b->b ? -1 : (a->b > b->b);
 }
 
 static int cmp_pair(const void *x, const void *y)
@@ -485,27 +483,48 @@ static void count_rung(prox_scene_stats *st, prox_decided_by d)
     else if (d == PROX_DECIDED_EXACT) st->exact++;
 }
 
-/* Runs the ladder over the candidates in chunks (in parallel when built with OpenMP) and keeps the
- * pairs within the threshold or with a failed status. */
+/* One chunk of candidates through the ladder, shared by the worker threads. */
+typedef struct ladder_job {
+    const prox_scene *s;
+    const cand *c;
+    prox_pair_result *res;
+    size_t m;
+    prox_query_mode mode;
+    double cut;
+    atomic_size_t next;
+} ladder_job;
+
+static void ladder_worker(void *ctx, int worker)
+{
+    ladder_job *j = ctx;
+    const prox_scene *s = j->s;
+    (void)worker;
+    for (;;) {
+        size_t i0 = atomic_fetch_add(&j->next, SCENE_GRAIN);
+        if (i0 >= j->m) return;
+        size_t i1 = i0 + SCENE_GRAIN < j->m ? i0 + SCENE_GRAIN : j->m;
+        for (size_t i = i0; i < i1; ++i) {
+            const cand *c = &j->c[i];
+            j->res[i] = ladder(&s->shapes[c->a], &s->shapes[c->b], &s->bounds[c->a], &s->bounds[c->b], j->mode, j->cut);
+        }
+    }
+}
+
+/* Runs the ladder over the candidates in chunks (on the scene's threads) and keeps the pairs within
+ * the threshold or with a failed status. */
 static prox_status evaluate(const prox_scene *s, const cand *c, size_t nc, prox_query_mode mode, double cut,
                             prox_scene_report *rep)
 {
     size_t chunk = nc < SCENE_CHUNK ? nc : SCENE_CHUNK, cap = 0;
     prox_pair_result *res = chunk ? malloc(chunk * sizeof *res) : NULL;
     if (chunk && !res) return PROX_ENOMEM;
+    int threads = prox_par_threads(s->threads);
     for (size_t start = 0; start < nc; start += chunk) {
-        ptrdiff_t m = (ptrdiff_t)(nc - start < chunk ? nc - start : chunk);
-        const cand *cc = c + start;
-#ifdef _OPENMP
-        int nt = s->threads > 0 ? s->threads : omp_get_max_threads();
-#pragma omp parallel for schedule(dynamic, 64) num_threads(nt) if (nt > 1 && m > 64)
-        for (ptrdiff_t i = 0; i < m; ++i)
-            res[i] = ladder(&s->shapes[cc[i].a], &s->shapes[cc[i].b], &s->bounds[cc[i].a], &s->bounds[cc[i].b], mode, cut);
-#else
-        for (ptrdiff_t i = 0; i < m; ++i)
-            res[i] = ladder(&s->shapes[cc[i].a], &s->shapes[cc[i].b], &s->bounds[cc[i].a], &s->bounds[cc[i].b], mode, cut);
-#endif
-        for (ptrdiff_t i = 0; i < m; ++i) {
+        size_t m = nc - start < chunk ? nc - start : chunk;
+        ladder_job job = {.s = s, .c = c + start, .res = res, .m = m, .mode = mode, .cut = cut};
+        atomic_init(&job.next, 0);
+        prox_par_run(m > SCENE_GRAIN ? threads : 1, ladder_worker, &job);
+        for (size_t i = 0; i < m; ++i) {
             count_rung(&rep->stats, res[i].decided_by);
             if (!res[i].closer && res[i].status == PROX_OK) continue;
             if (rep->npairs == cap) {
@@ -517,10 +536,11 @@ static prox_status evaluate(const prox_scene *s, const cand *c, size_t nc, prox_
                 }
                 rep->pairs = q, cap = ncap;
             }
-            rep->pairs[rep->npairs++] = (prox_scene_pair){cc[i].a, cc[i].b, res[i]};
+            rep->pairs[rep->npairs++] = (prox_scene_pair){c[start + i].a, c[start + i].b, res[i]};
         }
     }
     free(res);
+    /* the candidates come sorted by (a, b) already; the sort keeps the order a documented property */
     if (rep->npairs) qsort(rep->pairs, rep->npairs, sizeof *rep->pairs, cmp_pair);
     rep->stats.reported = rep->npairs;
     return PROX_OK;
@@ -540,7 +560,7 @@ static prox_scene_report run_pairs(const prox_scene *s, double clearance, prox_q
     rep.stats.naive_pairs = s->n < 2 ? 0 : s->n * (s->n - 1) / 2;
     cand *c = NULL;
     size_t nc = 0;
-    int fail = (naive || clearance == INFINITY) ? all_pairs(s, &c, &nc) : sweep(s, clearance, &c, &nc);
+    int fail = (naive || clearance == INFINITY) ? all_pairs(s, &c, &nc) : broad(s, clearance, &c, &nc);
     rep.stats.candidates = nc;
     rep.status = fail ? PROX_ENOMEM : evaluate(s, c, nc, mode, clearance, &rep);
     free(c);
@@ -566,9 +586,9 @@ PROX_API prox_scene_report prox_scene_intersecting(const prox_scene *s, prox_que
 static double nearest_upper_bound(const prox_scene *s)
 {
     double best = INFINITY;
-    sweep_key *key = malloc(s->n * sizeof *key);
+    near_key *key = malloc(s->n * sizeof *key);
     if (!key) return INFINITY;
-    for (size_t i = 0; i < s->n; ++i) key[i] = (sweep_key){s->bounds[i].sphere.center.x, i};
+    for (size_t i = 0; i < s->n; ++i) key[i] = (near_key){s->bounds[i].sphere.center.x, i};
     qsort(key, s->n, sizeof *key, cmp_key);
     for (size_t i = 0; i + 1 < s->n; ++i) {
         const prox_shape *a = &s->shapes[key[i].idx], *b = &s->shapes[key[i + 1].idx];
@@ -593,15 +613,14 @@ PROX_API prox_scene_report prox_scene_nearest(const prox_scene *s)
     double best = nearest_upper_bound(s);
     cand *c = NULL;
     size_t nc = 0;
-    if (sweep(s, best, &c, &nc)) {
+    if (broad(s, best, &c, &nc)) {
         rep.status = PROX_ENOMEM;
         return rep;
     }
     rep.stats.candidates = nc;
-    qsort(c, nc, sizeof *c, cmp_cand);
     prox_scene_pair found = {0, 0, {0}};
     int have = 0;
-    for (size_t i = 0; i < nc; ++i) { /* serial: each exact distance tightens the cut for the rest */
+    for (size_t i = 0; i < nc; ++i) { /* serial, in (a, b) order: each exact distance tightens the cut */
         prox_pair_result r = ladder(&s->shapes[c[i].a], &s->shapes[c[i].b], &s->bounds[c[i].a], &s->bounds[c[i].b],
                                     PROX_MODE_POINTS, best);
         count_rung(&rep.stats, r.decided_by);

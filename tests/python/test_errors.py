@@ -175,7 +175,11 @@ def test_extension_checks_its_own_arguments():
     with pytest.raises(ValueError, match="unknown method"):
         _prox.query(0, rows, 0, rows, 0, 9, 1)
     with pytest.raises(ValueError, match="kind"):
-        _prox.query(5, rows, 0, rows, 0, 0, 1)
+        _prox.query(10, rows, 0, rows, 0, 0, 1)  # kinds run 0 (RCC) to 9 (ARB)
+    with pytest.raises(ValueError, match="kind"):
+        _prox.query(0, rows, -1, rows, 0, 0, 1)
+    with pytest.raises(ValueError, match="rows of 12"):
+        _prox.query(5, rows, 0, rows, 0, 0, 1)  # a REC row has 12 numbers
     with pytest.raises(ValueError, match="rows of 4"):
         _prox.query(3, rows, 0, rows, 0, 0, 1)
     with pytest.raises(ValueError, match="threads"):

@@ -72,7 +72,10 @@ def test_shape_accessors():
 
 def test_check_deck_reports_the_example_deck():
     deck = EXAMPLES / "cask.mcnp"
-    rep = prox.check_deck(deck)
+    cells = prox.check_deck(deck)  # a deck with cells: the cell report (docs/CLI.md)
+    assert set(cells) >= {"deck", "title", "cells", "overlaps", "gaps", "undecided", "errors", "stats"}
+    assert cells["deck"] == str(deck) and cells["cells"] > 0
+    rep = prox.check_deck(deck, bodies=True)
     assert set(rep) >= {"deck", "title", "bodies", "pairs", "errors", "unsupported", "stats"}
     assert rep["deck"] == str(deck)
     assert {b["type"] for b in rep["bodies"]} >= {"RCC", "BOX", "RPP", "SPH"}
@@ -83,12 +86,14 @@ def test_check_deck_reports_the_example_deck():
     assert len(every["pairs"]) >= len(rep["pairs"])
 
 
-@pytest.mark.parametrize("args", [{}, {"all": True}, {"clearance": 5.0}])
+@pytest.mark.parametrize("args", [{}, {"bodies": True}, {"all": True}, {"clearance": 5.0}, {"resolution": 2.0}])
 def test_check_deck_equals_the_cli_report(cli, args):
     deck = str(EXAMPLES / "cask.mcnp")
     argv = [cli, "check", deck, "--json"] + (["--all"] if args.get("all") else [])
-    if "clearance" in args:
-        argv += ["--clearance", repr(args["clearance"])]
+    argv += ["--bodies"] if args.get("bodies") else []
+    for key in ("clearance", "resolution"):
+        if key in args:
+            argv += [f"--{key}", repr(args[key])]
     p = subprocess.run(argv, capture_output=True, text=True, timeout=60)
     assert p.returncode in (0, 1), p.stderr
     assert prox.check_deck(deck, **args) == json.loads(p.stdout)
@@ -97,5 +102,5 @@ def test_check_deck_equals_the_cli_report(cli, args):
 def test_check_deck_with_errors_in_the_deck(tmp_path):
     deck = tmp_path / "bad.mcnp"
     deck.write_text("bad\n1 0 -1\n\n1 SO 1\n2 RCC 0 0 0 0 0 1\n3 SO 0.5\n\n")
-    rep = prox.check_deck(deck)
+    rep = prox.check_deck(deck)  # malformed cards: the body-level report lists them
     assert rep["errors"] and "RCC" in rep["errors"][0]["message"]

@@ -1,0 +1,395 @@
+/* The prepared convex polytope (core/polytope.h) of BOX, RPP, RHP/HEX, WED and ARB.
+ *
+ * BOX, RPP, RHP and WED are right prisms over a polygon (rectangle, hexagon, triangle): one builder
+ * makes the prism from the polygon's corners (counter-clockwise about the height), the height
+ * vector and the MCNP facet number of each side, of the top and of the base. ARB is built from its
+ * corners and face loops. Facet numbers follow the MCNP manual's macrobody tables
+ * (docs/algorithms/polytopes.md gives them with their source):
+ *   BOX 1..6: end of a1, start of a1, end of a2, start of a2, end of a3, start of a3;
+ *   RPP 1..6: x = xmax, x = xmin, y = ymax, y = ymin, z = zmax, z = zmin;
+ *   RHP 1..6: the side planes at +r, -r, +s, -s, +t, -t, 7 top (base + h), 8 base;
+ *   WED 1 slant (through v + v1 and v + v2), 2 the side spanned by v2 and v3, 3 the side spanned by
+ *       v1 and v3, 4 top (v + v3), 5 base;
+ *   ARB k: the k-th face entry of the card. */
+#include "core/polytope.h"
+
+#include <math.h>
+#include <string.h>
+
+/* ---- topology shared by every kind ---- */
+
+/* Unit outward normal of a face loop by Newell's method (exact for a planar loop, the least-squares
+ * plane's normal otherwise). */
+static prox_vec3 newell(const prox_polytope *p, int f)
+{
+    prox_vec3 s = prox_v3(0, 0, 0);
+    int m = p->fnv[f];
+    for (int i = 0; i < m; ++i) {
+        prox_vec3 a = p->v[p->fv[f][i]], b = p->v[p->fv[f][(i + 1) % m]];
+        s.x += (a.y - b.y) * (a.z + b.z);
+        s.y += (a.z - b.z) * (a.x + b.x);
+        s.z += (a.x - b.x) * (a.y + b.y);
+    }
+    double l = prox_v3_norm(s);
+    return l > 0.0 ? prox_v3_scale(s, 1.0 / l) : s;
+}
+
+/* Face whose loop holds the directed edge a -> b, or -1. */
+static int face_with_edge(const prox_polytope *p, int a, int b)
+{
+    for (int f = 0; f < p->nf; ++f)
+        for (int i = 0; i < p->fnv[f]; ++i)
+            if (p->fv[f][i] == a && p->fv[f][(i + 1) % p->fnv[f]] == b) return f;
+    return -1;
+}
+
+/* Normals, plane offsets (mean over the face's corners), edges and size from the corners and the
+ * outward face loops (the normals too unless have_normals). An ARB whose loops do not close into a surface (an edge without its reverse
+ * in another face) gets ne = -1: the validator's test for an open surface. */
+static void finish(prox_polytope *p, int have_normals)
+{
+    for (int f = 0; f < p->nf; ++f) {
+        if (!have_normals) p->n[f] = newell(p, f);
+        double s = 0.0;
+        for (int i = 0; i < p->fnv[f]; ++i) s += prox_v3_dot(p->n[f], p->v[p->fv[f][i]]);
+        p->d[f] = s / p->fnv[f];
+    }
+    p->ne = 0;
+    for (int f = 0; f < p->nf; ++f)
+        for (int i = 0; i < p->fnv[f]; ++i) {
+            int a = p->fv[f][i], b = p->fv[f][(i + 1) % p->fnv[f]];
+            int g = face_with_edge(p, b, a);
+            if (g < 0 || p->ne < 0) {
+                p->ne = -1;
+                continue;
+            }
+            if (a > b) continue;
+            if (p->ne >= PROX_POLY_MAXE) {
+                p->ne = -1;
+                continue;
+            }
+            p->e[p->ne][0] = (unsigned char)a;
+            p->e[p->ne][1] = (unsigned char)b;
+            p->ef[p->ne][0] = (unsigned char)f;
+            p->ef[p->ne][1] = (unsigned char)g;
+            p->ne++;
+        }
+    p->size = 0.0;
+    for (int i = 0; i < p->nv; ++i)
+        for (int j = i + 1; j < p->nv; ++j) p->size = fmax(p->size, prox_v3_dist(p->v[i], p->v[j]));
+}
+
+/* Moves the corners (given relative to the anchor o) to their centroid; returns the centroid (absolute). */
+static prox_vec3 centre(prox_polytope *p, prox_vec3 o)
+{
+    prox_vec3 g = prox_v3(0, 0, 0);
+    for (int i = 0; i < p->nv; ++i) g = prox_v3_add(g, p->v[i]);
+    g = prox_v3_scale(g, 1.0 / p->nv);
+    for (int i = 0; i < p->nv; ++i) p->v[i] = prox_v3_sub(p->v[i], g);
+    return prox_v3_add(o, g);
+}
+
+/* Right prism over the polygon q[0..m-1] (relative to the anchor o) with height vector h; side i
+ * runs from q[i] to q[i+1] and has facet number side[i] and unit outward normal sn[i] (the card's own
+ * direction: a normal from the corners of a thin side would carry their rounding divided by its
+ * height). The polygon may turn either way about h. */
+static prox_vec3 prism(prox_polytope *p, prox_vec3 o, const prox_vec3 *q, const int *side, const prox_vec3 *sn, int m,
+                       prox_vec3 h, int top, int base)
+{
+    prox_vec3 area = prox_v3(0, 0, 0);
+    for (int i = 0; i < m; ++i) area = prox_v3_add(area, prox_v3_cross(q[i], q[(i + 1) % m]));
+    int rev = prox_v3_dot(area, h) < 0.0;
+    memset(p, 0, sizeof *p);
+    p->nv = 2 * m;
+    p->nf = m + 2;
+    for (int i = 0; i < m; ++i) {
+        int j = rev ? m - 1 - i : i;              /* polygon corner i in counter-clockwise order */
+        int s = rev ? (2 * m - 2 - i) % m : i;    /* the side from corner i to corner i + 1 */
+        p->v[i] = q[j];
+        p->v[m + i] = prox_v3_add(q[j], h);
+        p->facet[i] = side[s];
+        p->n[i] = sn[s];
+    }
+    for (int i = 0; i < m; ++i) {
+        int k = (i + 1) % m;
+        p->fnv[i] = 4;
+        p->fv[i][0] = (unsigned char)i;
+        p->fv[i][1] = (unsigned char)k;
+        p->fv[i][2] = (unsigned char)(m + k);
+        p->fv[i][3] = (unsigned char)(m + i);
+        p->fv[m][i] = (unsigned char)(m + i);          /* top, counter-clockwise about h */
+        p->fv[m + 1][i] = (unsigned char)(m - 1 - i);  /* base, clockwise about h */
+    }
+    p->fnv[m] = p->fnv[m + 1] = m;
+    p->facet[m] = top;
+    p->facet[m + 1] = base;
+    prox_vec3 w = prox_v3_normalize(h);
+    p->n[m] = w;
+    p->n[m + 1] = prox_v3_neg(w);
+    prox_vec3 c = centre(p, o);
+    finish(p, 1);
+    return c;
+}
+
+/* ---- the five kinds ---- */
+
+static prox_vec3 make_box(const prox_box *b, const int facet[6], prox_polytope *p)
+{
+    const prox_vec3 *e = b->edge;
+    prox_vec3 q[4] = {prox_v3(0, 0, 0), e[0], prox_v3_add(e[0], e[1]), e[1]};
+    /* sides: start of a2 (q0-q1), end of a1 (q1-q2), end of a2 (q2-q3), start of a1 (q3-q0) */
+    int side[4] = {facet[3], facet[0], facet[2], facet[1]};
+    prox_vec3 u0 = prox_v3_normalize(e[0]), u1 = prox_v3_normalize(e[1]);
+    prox_vec3 sn[4] = {prox_v3_neg(u1), u0, u1, prox_v3_neg(u0)};
+    return prism(p, b->corner, q, side, sn, 4, e[2], facet[4], facet[5]);
+}
+
+/* The hexagon's corner where the side lines (n_i, d_i) and (n_j, d_j) of the cross-section meet
+ * (2-D coordinates in the basis e1, e2 of the plane orthogonal to the height; Cramer's rule). */
+static void line_meet(const double ni[2], double di, const double nj[2], double dj, double out[2])
+{
+    double det = ni[0] * nj[1] - ni[1] * nj[0];
+    out[0] = (di * nj[1] - dj * ni[1]) / det;
+    out[1] = (ni[0] * dj - nj[0] * di) / det;
+}
+
+/* The six side lines of an RHP's cross-section sorted by angle: normals nl[k] (2-D), offsets dl[k]
+ * and facet numbers fk[k]. Shared with the validator through prox_rhp_hexagon. */
+int prox_rhp_hexagon(const prox_rhp *h, prox_vec3 *e1, prox_vec3 *e2, double nl[6][2], double dl[6], int fk[6])
+{
+    prox_vec3 w = prox_v3_normalize(h->axis);
+    *e1 = prox_v3_normalize(prox_v3_reject(h->r[0], w));
+    *e2 = prox_v3_cross(w, *e1);
+    double ang[6];
+    for (int i = 0; i < 3; ++i) {
+        prox_vec3 r = prox_v3_reject(h->r[i], w);
+        double len = prox_v3_norm(r);
+        double x = prox_v3_dot(r, *e1) / len, y = prox_v3_dot(r, *e2) / len;
+        for (int s = 0; s < 2; ++s) {
+            int k = 2 * i + s;
+            nl[k][0] = s ? -x : x;
+            nl[k][1] = s ? -y : y;
+            dl[k] = len;
+            fk[k] = k + 1;
+            ang[k] = atan2(nl[k][1], nl[k][0]);
+        }
+    }
+    for (int i = 1; i < 6; ++i) /* insertion sort by angle */
+        for (int j = i; j > 0 && ang[j - 1] > ang[j]; --j) {
+            double t = ang[j], tx = nl[j][0], ty = nl[j][1], td = dl[j];
+            int tk = fk[j];
+            ang[j] = ang[j - 1], nl[j][0] = nl[j - 1][0], nl[j][1] = nl[j - 1][1], dl[j] = dl[j - 1], fk[j] = fk[j - 1];
+            ang[j - 1] = t, nl[j - 1][0] = tx, nl[j - 1][1] = ty, dl[j - 1] = td, fk[j - 1] = tk;
+        }
+    return 6;
+}
+
+static prox_vec3 make_rhp(const prox_rhp *h, prox_polytope *p)
+{
+    prox_vec3 e1, e2;
+    double nl[6][2], dl[6];
+    int fk[6], side[6];
+    prox_rhp_hexagon(h, &e1, &e2, nl, dl, fk);
+    prox_vec3 q[6], sn[6];
+    for (int k = 0; k < 6; ++k) {
+        int j = (k + 1) % 6;
+        double x[2];
+        line_meet(nl[k], dl[k], nl[j], dl[j], x); /* corner k joins side lines k and k + 1 */
+        q[k] = prox_v3_add(prox_v3_scale(e1, x[0]), prox_v3_scale(e2, x[1]));
+        side[k] = fk[j];                            /* side from corner k to corner k + 1 */
+        int i = (fk[j] - 1) / 2;                    /* the card's r[i], signed: facet 2i+1 is +r[i] */
+        prox_vec3 u = prox_v3_normalize(h->r[i]);
+        sn[k] = (fk[j] & 1) ? u : prox_v3_neg(u);
+    }
+    return prism(p, h->base, q, side, sn, 6, h->axis, 7, 8);
+}
+
+static prox_vec3 make_wed(const prox_wed *w, prox_polytope *p)
+{
+    prox_vec3 q[3] = {prox_v3(0, 0, 0), w->v1, w->v2};
+    int side[3] = {3, 1, 2}; /* v-v1: side of v1 and v3; v1-v2: slant; v2-v: side of v2 and v3 */
+    /* outward normals: each side's edge crossed with the height, turned away from the third corner */
+    prox_vec3 sn[3];
+    for (int i = 0; i < 3; ++i) {
+        prox_vec3 a = q[i], b = q[(i + 1) % 3], third = q[(i + 2) % 3];
+        prox_vec3 n = prox_v3_normalize(prox_v3_cross(prox_v3_sub(b, a), w->v3));
+        sn[i] = prox_v3_dot(n, prox_v3_sub(third, a)) > 0.0 ? prox_v3_neg(n) : n;
+    }
+    return prism(p, w->vertex, q, side, sn, 3, w->v3, 4, 5);
+}
+
+/* Corner digits of ARB face entry x (four digits; 0 for the missing fourth of a triangle). */
+static void arb_digits(int x, int dig[4])
+{
+    for (int i = 3; i >= 0; --i) {
+        dig[i] = x % 10;
+        x /= 10;
+    }
+}
+
+static prox_vec3 make_arb(const prox_arb *a, prox_polytope *p)
+{
+    memset(p, 0, sizeof *p);
+    int map[9], used[9] = {0};
+    for (int f = 0; f < 6; ++f) {
+        int dig[4];
+        if (a->face[f] <= 0) continue;
+        arb_digits(a->face[f], dig);
+        for (int i = 0; i < 4; ++i)
+            if (dig[i] >= 1 && dig[i] <= 8) used[dig[i]] = 1;
+    }
+    prox_vec3 o = prox_v3(0, 0, 0);
+    for (int c = 1; c <= 8; ++c)
+        if (used[c]) {
+            o = a->corner[c - 1];
+            break;
+        }
+    for (int c = 1; c <= 8; ++c) {
+        map[c] = -1;
+        if (!used[c]) continue;
+        map[c] = p->nv;
+        p->v[p->nv++] = prox_v3_sub(a->corner[c - 1], o);
+    }
+    prox_vec3 g = prox_v3(0, 0, 0);
+    for (int i = 0; i < p->nv; ++i) g = prox_v3_add(g, p->v[i]);
+    if (p->nv) g = prox_v3_scale(g, 1.0 / p->nv);
+    for (int f = 0; f < 6; ++f) {
+        int dig[4], m = 0;
+        if (a->face[f] <= 0) continue;
+        arb_digits(a->face[f], dig);
+        int k = p->nf;
+        for (int i = 0; i < 4; ++i)
+            if (dig[i] >= 1 && dig[i] <= 8) p->fv[k][m++] = (unsigned char)map[dig[i]];
+        p->fnv[k] = m;
+        p->facet[k] = f + 1;
+        p->nf++;
+        if (m < 3) continue;
+        /* Loops may be listed either way round: turn each to face outwards (away from the centroid). */
+        prox_vec3 n = newell(p, k);
+        if (prox_v3_dot(n, prox_v3_sub(p->v[p->fv[k][0]], g)) < 0.0)
+            for (int i = 0; i < m / 2; ++i) {
+                unsigned char t = p->fv[k][i];
+                p->fv[k][i] = p->fv[k][m - 1 - i];
+                p->fv[k][m - 1 - i] = t;
+            }
+    }
+    prox_vec3 c = p->nv ? centre(p, o) : o;
+    finish(p, 0);
+    return c;
+}
+
+prox_vec3 prox_polytope_make(const prox_shape *s, prox_polytope *p)
+{
+    static const int box_facets[6] = {1, 2, 3, 4, 5, 6};
+    switch (s->kind) {
+    case PROX_SHAPE_BOX: return make_box(&s->u.box, box_facets, p);
+    case PROX_SHAPE_RPP: {
+        prox_box b = prox_rpp_to_box(&s->u.rpp);
+        return make_box(&b, box_facets, p);
+    }
+    case PROX_SHAPE_RHP: return make_rhp(&s->u.rhp, p);
+    case PROX_SHAPE_WED: return make_wed(&s->u.wed, p);
+    case PROX_SHAPE_ARB: return make_arb(&s->u.arb, p);
+    default: break;
+    }
+    memset(p, 0, sizeof *p);
+    return prox_v3(0, 0, 0);
+}
+
+/* ---- queries ---- */
+
+double prox_polytope_hc(const prox_polytope *p, prox_vec3 d)
+{
+    double m = prox_v3_dot(d, p->v[0]);
+    for (int i = 1; i < p->nv; ++i) m = fmax(m, prox_v3_dot(d, p->v[i]));
+    return m;
+}
+
+prox_vec3 prox_polytope_pc(const prox_polytope *p, prox_vec3 d)
+{
+    int best = 0;
+    double m = prox_v3_dot(d, p->v[0]);
+    for (int i = 1; i < p->nv; ++i) {
+        double t = prox_v3_dot(d, p->v[i]);
+        if (t > m) m = t, best = i;
+    }
+    return p->v[best];
+}
+
+int prox_polytope_contains(const prox_polytope *p, prox_vec3 y, double tol)
+{
+    for (int f = 0; f < p->nf; ++f)
+        if (prox_v3_dot(p->n[f], y) > p->d[f] + tol) return 0;
+    return 1;
+}
+
+/* Closest point of the segment [a, b] to y. */
+static prox_vec3 seg_closest(prox_vec3 a, prox_vec3 b, prox_vec3 y)
+{
+    prox_vec3 ab = prox_v3_sub(b, a);
+    double l2 = prox_v3_norm2(ab);
+    double t = l2 > 0.0 ? prox_v3_dot(prox_v3_sub(y, a), ab) / l2 : 0.0;
+    t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+    return prox_v3_mad(a, t, ab);
+}
+
+/* Closest point of face f (a convex polygon) to y: the foot on its plane when that lies inside
+ * every edge's inner half-plane, else the nearest point of its edges. */
+static prox_vec3 face_closest(const prox_polytope *p, int f, prox_vec3 y)
+{
+    prox_vec3 n = p->n[f];
+    prox_vec3 foot = prox_v3_mad(y, p->d[f] - prox_v3_dot(n, y), n);
+    int m = p->fnv[f], inside = 1;
+    for (int i = 0; i < m && inside; ++i) {
+        prox_vec3 a = p->v[p->fv[f][i]], b = p->v[p->fv[f][(i + 1) % m]];
+        prox_vec3 out = prox_v3_cross(prox_v3_sub(b, a), n); /* outward in the face plane */
+        if (prox_v3_dot(out, prox_v3_sub(foot, a)) > 0.0) inside = 0;
+    }
+    if (inside) return foot;
+    prox_vec3 best = p->v[p->fv[f][0]];
+    double bd = INFINITY;
+    for (int i = 0; i < m; ++i) {
+        prox_vec3 c = seg_closest(p->v[p->fv[f][i]], p->v[p->fv[f][(i + 1) % m]], y);
+        double dd = prox_v3_norm2(prox_v3_sub(c, y));
+        if (dd < bd) bd = dd, best = c;
+    }
+    return best;
+}
+
+/* Nearest boundary point of an outside point: the nearest over the faces it sees. */
+static prox_vec3 boundary_closest(const prox_polytope *p, prox_vec3 y)
+{
+    prox_vec3 best = y;
+    double bd = INFINITY;
+    for (int f = 0; f < p->nf; ++f) {
+        if (prox_v3_dot(p->n[f], y) <= p->d[f]) continue; /* a face seen from behind is never nearest */
+        prox_vec3 c = face_closest(p, f, y);
+        double dd = prox_v3_norm2(prox_v3_sub(c, y));
+        if (dd < bd) bd = dd, best = c;
+    }
+    return best;
+}
+
+prox_vec3 prox_polytope_closest(const prox_polytope *p, prox_vec3 y)
+{
+    if (prox_polytope_contains(p, y, 0.0)) return y;
+    return boundary_closest(p, y);
+}
+
+double prox_polytope_boundary(const prox_polytope *p, prox_vec3 y, prox_vec3 *q)
+{
+    if (!prox_polytope_contains(p, y, 0.0)) {
+        *q = boundary_closest(p, y);
+        return prox_v3_dist(*q, y);
+    }
+    /* Inside: the nearest face plane; its foot lies in the solid (the inscribed ball of that radius
+     * about y touches the plane there). */
+    int best = 0;
+    double s = p->d[0] - prox_v3_dot(p->n[0], y);
+    for (int f = 1; f < p->nf; ++f) {
+        double t = p->d[f] - prox_v3_dot(p->n[f], y);
+        if (t < s) s = t, best = f;
+    }
+    *q = prox_v3_mad(y, s, p->n[best]);
+    return -s;
+}

@@ -1,0 +1,54 @@
+/* Internal (core): the one prepared representation of a convex polytope, shared by BOX, RPP, RHP/HEX,
+ * WED and ARB wherever they meet a polytope method (polytope pairs, cells' facets, membership). A BOX
+ * or RPP keeps its faster prox_bframe (core/box.h) in the generic body; prox_polytope_make also builds
+ * the polytope of a box for the polytope-pair solvers.
+ *
+ * Coordinates are relative to the body's reference point c (the vertex centroid), returned by
+ * prox_polytope_make, so that a body far from the origin keeps its relative precision. The solid is
+ * { y : n_f . y <= d_f for every face f }; vertices, edges and face loops describe its boundary. */
+#ifndef PROX_CORE_POLYTOPE_H
+#define PROX_CORE_POLYTOPE_H
+
+#include "prox/shapes.h"
+
+#define PROX_POLY_MAXV 12  /* RHP: 12 corners */
+#define PROX_POLY_MAXF 8   /* RHP: six sides and two hexagonal ends */
+#define PROX_POLY_MAXE 18  /* RHP: 18 edges */
+#define PROX_POLY_MAXFV 6  /* corners of one face (a hexagonal end) */
+
+typedef struct prox_polytope {
+    int nv, nf, ne;
+    prox_vec3 v[PROX_POLY_MAXV];                       /* corners, relative to c */
+    prox_vec3 n[PROX_POLY_MAXF];                       /* unit outward face normals */
+    double d[PROX_POLY_MAXF];                          /* the solid is n_f . y <= d_f */
+    int facet[PROX_POLY_MAXF];                         /* MCNP facet number k of face f (for n.k) */
+    int fnv[PROX_POLY_MAXF];                           /* corners of face f */
+    unsigned char fv[PROX_POLY_MAXF][PROX_POLY_MAXFV]; /* face loop, counter-clockwise seen from outside */
+    unsigned char e[PROX_POLY_MAXE][2];                /* edge corners */
+    unsigned char ef[PROX_POLY_MAXE][2];               /* the two faces meeting at each edge */
+    double size;                                       /* largest corner-to-corner distance */
+} prox_polytope;
+
+/* The polytope of a valid BOX, RPP, RHP, WED or ARB; returns its reference point c (absolute). */
+prox_vec3 prox_polytope_make(const prox_shape *s, prox_polytope *p);
+
+/* Centred support function hc(d) = max_i d.v_i and a support point (a corner; a zero component
+ * along a face or an edge picks one of its corners). */
+double prox_polytope_hc(const prox_polytope *p, prox_vec3 d);
+prox_vec3 prox_polytope_pc(const prox_polytope *p, prox_vec3 d);
+
+/* 1 when y (relative to c) lies in the solid enlarged by tol >= 0 (every face plane moved out by tol). */
+int prox_polytope_contains(const prox_polytope *p, prox_vec3 y, double tol);
+
+/* Closest point of the solid to y (y itself inside), relative to c. */
+prox_vec3 prox_polytope_closest(const prox_polytope *p, prox_vec3 y);
+
+/* The hexagon of an RHP in its base plane: in-plane axes e1, e2, the six side normals nl[k] and
+ * offsets dl[k] in those axes, and their MCNP facet numbers fk[k]; returns 0 when the six side
+ * planes bound a convex hexagon (shared by the builder and the validator). */
+int prox_rhp_hexagon(const prox_rhp *h, prox_vec3 *e1, prox_vec3 *e2, double nl[6][2], double dl[6], int fk[6]);
+
+/* Signed distance from y to the boundary (< 0 inside) and the closest boundary point *q. */
+double prox_polytope_boundary(const prox_polytope *p, prox_vec3 y, prox_vec3 *q);
+
+#endif

@@ -1,0 +1,211 @@
+/* Validators of the polytope macrobodies RHP/HEX, WED and ARB, and the 9-entry RHP card form.
+ * Card definitions: MCNP manual, macrobody surface cards (docs/algorithms/polytopes.md). */
+#include <math.h>
+
+#include "core/polytope.h"
+#include "core/tol.h"
+#include "prox/shapes.h"
+
+static int coord_ok(double x) { return fabs(x) <= PROX_MAX_COORD; }
+static int coord3_ok(prox_vec3 v) { return coord_ok(v.x) & coord_ok(v.y) & coord_ok(v.z); }
+static int size_ok(double s) { return (s >= PROX_MIN_SIZE) & (s <= PROX_MAX_COORD); }
+
+/* Finite (else NONFINITE) and within the coordinate range (else RANGE). */
+static prox_status vec_ok(prox_vec3 v)
+{
+    if (!prox_v3_isfinite(v)) return PROX_EINVAL_NONFINITE;
+    return coord3_ok(v) ? PROX_OK : PROX_EINVAL_RANGE;
+}
+
+/* |cos| of the angle between two non-zero vectors, on unit vectors so that nothing overflows. */
+static double abs_cos(prox_vec3 a, prox_vec3 b)
+{
+    return fabs(prox_v3_dot(prox_v3_normalize(a), prox_v3_normalize(b)));
+}
+
+/* A non-zero vector inside the size range: 0 when fine, else the status. */
+static prox_status size_vec(prox_vec3 v, prox_status zero)
+{
+    double l = prox_v3_norm(v);
+    if (!(l > 0.0)) return zero;
+    return size_ok(l) ? PROX_OK : PROX_EINVAL_RANGE;
+}
+
+/* The six side lines of the cross-section bound a convex hexagon with six sides of positive length:
+ * consecutive normals (by angle) turn by less than pi, and each corner lies strictly inside the
+ * four other side lines (by PROX_TOL_POLY_DEGEN x the hexagon's size). */
+static int hexagon_ok(const prox_rhp *h)
+{
+    prox_vec3 e1, e2;
+    double nl[6][2], dl[6];
+    int fk[6];
+    prox_rhp_hexagon(h, &e1, &e2, nl, dl, fk);
+    double x[6][2], scale = fmax(dl[0], fmax(dl[2], dl[4]));
+    for (int k = 0; k < 6; ++k) {
+        int j = (k + 1) % 6;
+        double det = nl[k][0] * nl[j][1] - nl[k][1] * nl[j][0];
+        if (!(det > PROX_TOL_POLY_DEGEN)) return 0;
+        double di = dl[k], dj = dl[j];
+        x[k][0] = (di * nl[j][1] - dj * nl[k][1]) / det;
+        x[k][1] = (nl[k][0] * dj - nl[j][0] * di) / det;
+        if (!isfinite(x[k][0]) || !isfinite(x[k][1])) return 0;
+    }
+    for (int k = 0; k < 6; ++k)
+        for (int m = 0; m < 6; ++m) {
+            if (m == k || m == (k + 1) % 6) continue;
+            double s = nl[m][0] * x[k][0] + nl[m][1] * x[k][1] - dl[m];
+            if (!(s < -PROX_TOL_POLY_DEGEN * scale)) return 0;
+        }
+    return 1;
+}
+
+PROX_API prox_status prox_rhp_validate(const prox_rhp *h)
+{
+    if (!h) return PROX_EINVAL_ARG;
+    prox_status s;
+    if ((s = vec_ok(h->base)) || (s = vec_ok(h->axis))) return s;
+    for (int i = 0; i < 3; ++i)
+        if ((s = vec_ok(h->r[i]))) return s;
+    if ((s = size_vec(h->axis, PROX_EINVAL_AXIS))) return s;
+    for (int i = 0; i < 3; ++i) {
+        if ((s = size_vec(h->r[i], PROX_EINVAL_RHP))) return s;
+        if (abs_cos(h->r[i], h->axis) > PROX_BOX_ORTHO_TOL) return PROX_EINVAL_RHP;
+    }
+    return hexagon_ok(h) ? PROX_OK : PROX_EINVAL_RHP;
+}
+
+PROX_API prox_status prox_rhp_regular(prox_vec3 base, prox_vec3 axis, prox_vec3 r, prox_rhp *out)
+{
+    if (!out) return PROX_EINVAL_ARG;
+    prox_rhp h = {.base = base, .axis = axis, .r = {r, r, r}};
+    if (prox_v3_isfinite(axis) && prox_v3_isfinite(r) && prox_v3_norm(axis) > 0.0) {
+        /* s and t: r turned by 60 and 120 degrees about the height (right-handed). */
+        prox_vec3 w = prox_v3_normalize(axis);
+        prox_vec3 wr = prox_v3_cross(w, r);
+        const double c = 0.5, sn = 0.86602540378443864676; /* cos 60, sin 60 */
+        h.r[1] = prox_v3_add(prox_v3_scale(r, c), prox_v3_scale(wr, sn));
+        h.r[2] = prox_v3_add(prox_v3_scale(r, -c), prox_v3_scale(wr, sn));
+    }
+    prox_status s = prox_rhp_validate(&h);
+    *out = s == PROX_OK ? h : (prox_rhp){0};
+    return s;
+}
+
+PROX_API prox_status prox_wed_validate(const prox_wed *w)
+{
+    if (!w) return PROX_EINVAL_ARG;
+    prox_status s;
+    if ((s = vec_ok(w->vertex)) || (s = vec_ok(w->v1)) || (s = vec_ok(w->v2)) || (s = vec_ok(w->v3))) return s;
+    if ((s = size_vec(w->v1, PROX_EINVAL_WED)) || (s = size_vec(w->v2, PROX_EINVAL_WED)) ||
+        (s = size_vec(w->v3, PROX_EINVAL_WED)))
+        return s;
+    if (abs_cos(w->v3, w->v1) > PROX_BOX_ORTHO_TOL || abs_cos(w->v3, w->v2) > PROX_BOX_ORTHO_TOL)
+        return PROX_EINVAL_WED;
+    prox_vec3 c = prox_v3_cross(prox_v3_normalize(w->v1), prox_v3_normalize(w->v2));
+    if (!(prox_v3_norm(c) > PROX_TOL_POLY_DEGEN)) return PROX_EINVAL_WED;
+    return PROX_OK;
+}
+
+/* ---- ARB ---- */
+
+/* Face entries: 0 (unused) or four digits, the first three naming corners 1-8 and the fourth a
+ * corner or 0, all distinct; at least four faces. */
+static prox_status arb_faces_ok(const prox_arb *a)
+{
+    int nf = 0;
+    for (int f = 0; f < 6; ++f) {
+        int x = a->face[f];
+        if (x == 0) continue;
+        if (x < 1000 || x > 9999) return PROX_EINVAL_ARB_FACE;
+        int dig[4];
+        for (int i = 3; i >= 0; --i, x /= 10) dig[i] = x % 10;
+        for (int i = 0; i < 4; ++i) {
+            if (dig[i] > 8 || (i < 3 && dig[i] == 0)) return PROX_EINVAL_ARB_FACE;
+            for (int j = 0; j < i; ++j)
+                if (dig[i] != 0 && dig[i] == dig[j]) return PROX_EINVAL_ARB_FACE;
+        }
+        nf++;
+    }
+    return nf >= 4 ? PROX_OK : PROX_EINVAL_ARB_CONVEX;
+}
+
+/* Orientation of c relative to the directed line a -> b, seen along n. */
+static double orient(prox_vec3 a, prox_vec3 b, prox_vec3 c, prox_vec3 n)
+{
+    return prox_v3_dot(prox_v3_cross(prox_v3_sub(b, a), prox_v3_sub(c, a)), n);
+}
+
+/* A four-corner loop crosses itself (its corners are not named in order round the face): one pair
+ * of opposite sides cross. */
+static int loop_crossed(const prox_polytope *p, int f)
+{
+    if (p->fnv[f] != 4) return 0;
+    prox_vec3 x[4], n = p->n[f];
+    for (int i = 0; i < 4; ++i) x[i] = p->v[p->fv[f][i]];
+    for (int k = 0; k < 2; ++k) {
+        prox_vec3 a = x[k], b = x[k + 1], c = x[k + 2], d = x[(k + 3) % 4];
+        if (orient(a, b, c, n) * orient(a, b, d, n) < 0.0 && orient(c, d, a, n) * orient(c, d, b, n) < 0.0) return 1;
+    }
+    return 0;
+}
+
+/* Corners of each face turn the same way about its normal (a convex loop). */
+static int loop_ok(const prox_polytope *p, int f)
+{
+    int m = p->fnv[f];
+    for (int i = 0; i < m; ++i) {
+        prox_vec3 a = p->v[p->fv[f][i]], b = p->v[p->fv[f][(i + 1) % m]], c = p->v[p->fv[f][(i + 2) % m]];
+        prox_vec3 t = prox_v3_cross(prox_v3_sub(b, a), prox_v3_sub(c, b));
+        if (!(prox_v3_dot(t, p->n[f]) > 0.0)) return 0;
+    }
+    return 1;
+}
+
+/* Shape of the built polytope: distinct corners, non-degenerate planar faces in order, a closed
+ * surface (every edge shared by two faces, V - E + F = 2), and every corner behind every face plane
+ * with some corner strictly behind each (a convex solid). */
+static prox_status arb_solid_ok(const prox_polytope *p)
+{
+    double S = p->size, tol = PROX_TOL_POLY_DEGEN * S;
+    if (!(S > 0.0)) return PROX_EINVAL_ARB_CONVEX;
+    for (int i = 0; i < p->nv; ++i)
+        for (int j = i + 1; j < p->nv; ++j)
+            if (!(prox_v3_dist(p->v[i], p->v[j]) > tol)) return PROX_EINVAL_ARB_FACE;
+    for (int f = 0; f < p->nf; ++f) {
+        /* a loop not in order round its face has crossing sides (or a zero normal); one in order
+         * that turns both ways (or with three corners in a line) is a dent */
+        if (!(prox_v3_norm(p->n[f]) > 0.5) || loop_crossed(p, f)) return PROX_EINVAL_ARB_FACE;
+        if (!loop_ok(p, f)) return PROX_EINVAL_ARB_CONVEX;
+        for (int i = 0; i < p->fnv[f]; ++i)
+            if (fabs(prox_v3_dot(p->n[f], p->v[p->fv[f][i]]) - p->d[f]) > PROX_TOL_ARB_PLANAR * S)
+                return PROX_EINVAL_ARB_PLANAR;
+    }
+    if (p->ne < 0 || p->nv - p->ne + p->nf != 2) return PROX_EINVAL_ARB_CONVEX;
+    for (int f = 0; f < p->nf; ++f) {
+        double deepest = 0.0;
+        for (int i = 0; i < p->nv; ++i) {
+            double s = prox_v3_dot(p->n[f], p->v[i]) - p->d[f];
+            if (s > PROX_TOL_ARB_PLANAR * S) return PROX_EINVAL_ARB_CONVEX;
+            deepest = fmin(deepest, s);
+        }
+        if (!(deepest < -tol)) return PROX_EINVAL_ARB_CONVEX;
+    }
+    return PROX_OK;
+}
+
+PROX_API prox_status prox_arb_validate(const prox_arb *a)
+{
+    if (!a) return PROX_EINVAL_ARG;
+    prox_status s;
+    for (int i = 0; i < 8; ++i)
+        if (!prox_v3_isfinite(a->corner[i])) return PROX_EINVAL_NONFINITE;
+    for (int i = 0; i < 8; ++i)
+        if ((s = vec_ok(a->corner[i]))) return s;
+    if ((s = arb_faces_ok(a))) return s;
+    prox_shape sh = prox_shape_from_arb(*a);
+    prox_polytope p;
+    prox_polytope_make(&sh, &p);
+    if ((s = arb_solid_ok(&p))) return s;
+    if (!size_ok(p.size)) return PROX_EINVAL_RANGE;
+    return PROX_OK;
+}

@@ -1,0 +1,31 @@
+/* Internal: exact distance and signed distance of two convex polytopes (core/polytope.h: BOX, RPP,
+ * RHP/HEX, WED, ARB), and the BOX-BOX fast paths. docs/algorithms/polytopes.md gives the method.
+ *
+ * A polytope's corners are relative to its reference point; ca and cb are the reference points
+ * returned by prox_polytope_make (absolute). Inputs are valid polytopes (the caller validates the
+ * shapes); results are absolute. */
+#ifndef PROX_DISTANCE_POLY_INTERNAL_H
+#define PROX_DISTANCE_POLY_INTERNAL_H
+
+#include "core/box.h"
+#include "core/polytope.h"
+#include "prox/result.h"
+
+/* Exact distance: disjoint, the nearest vertex-face, face-vertex or edge-edge pair, p1 on A and p2
+ * on B, certified by the gap along (p2 - p1) / |p2 - p1|; overlapping (no separating face normal or
+ * edge-edge cross product), intersect = 1, distance 0 and p1 = p2 a point of both solids (the mean
+ * of the corners of the intersection found), certified when it lies in both to PROX_TOL_TOUCH S. */
+prox_distance_result prox_poly_distance(const prox_polytope *a, prox_vec3 ca, const prox_polytope *b, prox_vec3 cb);
+
+/* Exact signed distance: disjoint, the distance with normal (p2 - p1) / |p2 - p1|; overlapping,
+ * sd = -(penetration depth) = the largest separation over the face normals of both and the
+ * edge-edge cross products (the facet normals of the Minkowski difference), with witnesses from
+ * the two support features along that normal: p2 - p1 = sd normal, p1 on A's boundary, p2 on B's. */
+prox_signed_result prox_poly_signed(const prox_polytope *a, prox_vec3 ca, const prox_polytope *b, prox_vec3 cb);
+
+/* BOX-BOX on prepared frames (core/box.h): the fast paths behind prox_box_box_distance and
+ * prox_box_box_signed_distance, for callers that already hold the frames (scenes, dispatch). */
+prox_distance_result prox_box_pair_distance(const prox_bframe *A, const prox_bframe *B);
+prox_signed_result prox_box_pair_signed(const prox_bframe *A, const prox_bframe *B);
+
+#endif

@@ -1,0 +1,1491 @@
+/* Certified support-function method for any pair of convex bodies (convex.h,
+ * docs/algorithms/convex_engine.md).
+ *
+ * Duality (Eberly, "Intersection of Cylinders", Secs. 3-4, turned from a sign test into an
+ * optimisation; Gilbert, Johnson & Keerthi 1988 for the distance): with phi(D) = h_A(D) + h_B(-D),
+ * the support function of P = A - B,
+ *     disjoint:     distance = max_{|D|=1} -phi(D)  = distance from the origin to P,
+ *     overlapping:  depth    = min_{|D|=1}  phi(D)  = distance from the origin to the boundary of P.
+ * The pair is kept relative to A's reference point (Delta = cB - cA) and at unit scale, so
+ * phi(D) = hcA(D) + hcB(-D) - D.Delta, grad phi(D) = pcA(D) - pcB(-D) - Delta (a support point of P,
+ * a subgradient on the kinks), Hess phi(D) = HA(D) + HB(-D) where both are smooth.
+ *
+ * Steps. GJK on P with exact support points (finite for polytope pairs; witnesses as barycentric
+ * combinations) decides the verdict and starts the search. Disjoint: Riemannian Newton on the sphere
+ * (the Riemannian Hessian T^T H T - phi I is positive definite when phi < 0) in the cells where both
+ * hc are smooth, and exact one-dimensional solves on each kink of either body near the optimum (the
+ * cone points and face normals, the great circles of side lines and polytope edges, the small circle
+ * of a cone's lateral surface) and at their crossings: phi is smooth along each kink circle, so a
+ * safeguarded secant on its derivative reaches it to rounding; polytope faces and edges are points
+ * and circles of this list, so the answer is reached in finitely many steps. The witnesses are the
+ * closest pair of the two support sets (points, segments, polygons, disks and ellipses) seen along
+ * the normal, polished by exact projections; certified when |p2 - p1| meets -phi within
+ * PROX_TOL_CERT S. Overlapping: global sampling, every kink circle searched whole, Newton from the best
+ * starts, then a cover of the sphere by geodesic triangles proves a lower bound on the depth: over a
+ * cap of radius rho around D_c, phi >= |g| cos(angle(g, D_c) + rho) with g the support point of P at
+ * D_c (h_P is convex and g.D <= h_P(D)), and phi >= the sum of each body's exact minimum over the
+ * cap (hc of a sphere, ellipsoid, cylinder and cone is a function of D.w alone). */
+#include "convex.h"
+
+#include "core/tol.h"
+
+#include <float.h>
+#include <stdatomic.h>
+#include <stddef.h>
+
+#define CVX_MAXK 64        /* kinks of a pair: a polytope has <= 8 faces and 18 edges */
+#define CVX_TOPK 6         /* distinct starts of the local depth search */
+#define CVX_GJK_IT 96      /* GJK iterations (polytopes finish in far fewer) */
+#define CVX_CIRCLE_SAMPLES 64
+#define CVX_LOCAL 0.05     /* radius (rad) of the local kink search around the best direction */
+#define CVX_NEAR 1e-5      /* a direction this close (rad) to a kink names it for the witnesses */
+#define CVX_BB_DEPTH 40    /* cover of the sphere: icosahedron faces split up to 40 times (1e-12 rad) */
+#define CVX_BB_BUDGET 40000
+#define CVX_GOLD 1.6180339887498948482 /* the icosahedron (0, +-1, +-golden) and its cyclic shifts */
+
+static atomic_ulong cvx_global_runs;
+
+unsigned long prox_convex_global_count(void) { return atomic_load(&cvx_global_runs); }
+
+/* ---- the pair --------------------------------------------------------------------------------- */
+
+/* A kink of phi: the point D = w (circle = 0) or the circle D.w = c (great circle when c = 0). */
+typedef struct cvx_kink {
+    int circle;
+    prox_vec3 w;
+    double c;
+} cvx_kink;
+
+typedef struct cvx {
+    prox_body a, b;   /* relative to A's reference point, unit scale */
+    prox_vec3 delta;  /* b.c - a.c */
+    double S;         /* scale of the scaled pair */
+    double best_phi;
+    prox_vec3 best_d;
+    int nk;
+    cvx_kink k[CVX_MAXK];
+    int ntop;
+    double tphi[CVX_TOPK];
+    prox_vec3 td[CVX_TOPK];
+} cvx;
+
+static prox_vec3 unit(prox_vec3 d) { return prox_v3_scale(d, 1.0 / prox_v3_norm(d)); }
+static double angle(prox_vec3 a, prox_vec3 b) { return atan2(prox_v3_norm(prox_v3_cross(a, b)), prox_v3_dot(a, b)); }
+
+static double phi_eval(const cvx *s, prox_vec3 d)
+{
+    return prox_body_hc(&s->a, d) + prox_body_hc(&s->b, prox_v3_neg(d)) - prox_v3_dot(d, s->delta);
+}
+
+static prox_vec3 phi_grad(const cvx *s, prox_vec3 d)
+{
+    return prox_v3_sub(prox_v3_sub(prox_body_pc(&s->a, d), prox_body_pc(&s->b, prox_v3_neg(d))), s->delta);
+}
+
+/* (M v - (Md)(Md.v) / q^2) / q with q^2 = d.Md: the Hessian of sqrt(d^T M d) applied to v. */
+static prox_vec3 sqrt_form_hess(prox_vec3 md, prox_vec3 mv, double q, prox_vec3 v)
+{
+    if (!(q > 0.0)) return prox_v3(0, 0, 0);
+    return prox_v3_scale(prox_v3_mad(mv, -prox_v3_dot(md, v) / (q * q), md), 1.0 / q);
+}
+
+/* Hessian of r |P d| (P the projection across the unit axis w) applied to v: r/|Pd| (P - p p^T) v. */
+static prox_vec3 lateral_hess(prox_vec3 w, double r, prox_vec3 d, prox_vec3 v)
+{
+    prox_vec3 perp = prox_v3_reject(d, w);
+    double n = prox_v3_norm(perp);
+    if (!(n > 0.0) || !(r > 0.0)) return prox_v3(0, 0, 0);
+    prox_vec3 p = prox_v3_scale(perp, 1.0 / n);
+    prox_vec3 x = prox_v3_reject(prox_v3_reject(v, w), p);
+    return prox_v3_scale(x, r / n);
+}
+
+/* Hessian of hc at d applied to v, where hc is smooth (zero for the polytopes). */
+static prox_vec3 hc_hess(const prox_body *b, prox_vec3 d, prox_vec3 v)
+{
+    switch (b->kind) {
+    case PROX_BODY_SPH: {
+        double n = prox_v3_norm(d);
+        return prox_v3_scale(prox_v3_reject(v, prox_v3_scale(d, 1.0 / n)), b->r / n);
+    }
+    case PROX_BODY_CYL: return lateral_hess(b->cyl.w, b->cyl.r, d, v);
+    case PROX_BODY_CONE: {
+        const prox_cone *k = &b->x.cone;
+        double t = prox_v3_dot(d, k->w), p = prox_v3_norm(prox_v3_reject(d, k->w));
+        double top = k->hh * t + k->r2 * p, base = -k->hh * t + k->r1 * p;
+        return lateral_hess(k->w, top >= base ? k->r2 : k->r1, d, v);
+    }
+    case PROX_BODY_ECYL: {
+        const prox_ecyl *k = &b->x.ecyl;
+        double s1 = k->a1 * k->a1, s2 = k->a2 * k->a2;
+        prox_vec3 md = prox_v3_add(prox_v3_scale(k->u1, s1 * prox_v3_dot(d, k->u1)), prox_v3_scale(k->u2, s2 * prox_v3_dot(d, k->u2)));
+        prox_vec3 mv = prox_v3_add(prox_v3_scale(k->u1, s1 * prox_v3_dot(v, k->u1)), prox_v3_scale(k->u2, s2 * prox_v3_dot(v, k->u2)));
+        return sqrt_form_hess(md, mv, sqrt(prox_v3_dot(d, md)), v);
+    }
+    case PROX_BODY_ELL: {
+        const prox_ellb *k = &b->x.ell;
+        double b2 = k->b * k->b, e = k->a * k->a - b2;
+        prox_vec3 md = prox_v3_mad(prox_v3_scale(d, b2), e * prox_v3_dot(d, k->w), k->w);
+        prox_vec3 mv = prox_v3_mad(prox_v3_scale(v, b2), e * prox_v3_dot(v, k->w), k->w);
+        return sqrt_form_hess(md, mv, sqrt(prox_v3_dot(d, md)), v);
+    }
+    default: return prox_v3(0, 0, 0);
+    }
+}
+
+static prox_vec3 phi_hess(const cvx *s, prox_vec3 d, prox_vec3 v)
+{
+    return prox_v3_add(hc_hess(&s->a, d, v), hc_hess(&s->b, prox_v3_neg(d), v));
+}
+
+/* Keeps d (unit) with its value: the best, and the list of distinct good starts. */
+static void record(cvx *s, prox_vec3 d, double f)
+{
+    if (f < s->best_phi) s->best_phi = f, s->best_d = d;
+    for (int i = 0; i < s->ntop; ++i)
+        if (prox_v3_dot(d, s->td[i]) > 1.0 - PROX_TOL_SAME_START) {
+            if (f < s->tphi[i]) s->tphi[i] = f, s->td[i] = d;
+            return;
+        }
+    int slot = s->ntop < CVX_TOPK ? s->ntop++ : -1;
+    if (slot < 0) {
+        slot = 0;
+        for (int i = 1; i < CVX_TOPK; ++i)
+            if (s->tphi[i] > s->tphi[slot]) slot = i;
+        if (!(f < s->tphi[slot])) return;
+    }
+    s->tphi[slot] = f;
+    s->td[slot] = d;
+}
+
+static double consider(cvx *s, prox_vec3 d)
+{
+    double n = prox_v3_norm(d);
+    if (!(n > 0.0) || !prox_v3_isfinite(d)) return INFINITY;
+    d = prox_v3_scale(d, 1.0 / n);
+    double f = phi_eval(s, d);
+    record(s, d, f);
+    return f;
+}
+
+/* ---- kinks -------------------------------------------------------------------------------------- */
+
+static void add_kink(cvx *s, int circle, prox_vec3 w, double c)
+{
+    if (s->nk >= CVX_MAXK) return;
+    for (int i = 0; i < s->nk; ++i) { /* the same circle or point twice (parallel box edges) */
+        const cvx_kink *k = &s->k[i];
+        if (k->circle != circle) continue;
+        double dw = prox_v3_dot(k->w, w);
+        if (!circle && dw > 1.0 - PROX_TOL_SAME_START) return;
+        if (circle && ((dw > 1.0 - 1e-15 && fabs(k->c - c) < 1e-15) || (dw < -1.0 + 1e-15 && fabs(k->c + c) < 1e-15))) return;
+    }
+    cvx_kink *k = &s->k[s->nk++];
+    k->circle = circle;
+    k->w = w;
+    k->c = c;
+}
+
+/* The kinks of body b in the direction sg D (sg = 1 for A, -1 for B), as kinks in D: where hc is not
+ * differentiable. A point u of b is the point sg u in D; a circle E.w = c in E = sg D is D.w = sg c. */
+static void body_kinks(cvx *s, const prox_body *b, double sg)
+{
+    switch (b->kind) {
+    case PROX_BODY_CYL:
+        add_kink(s, 0, b->cyl.w, 0), add_kink(s, 0, prox_v3_neg(b->cyl.w), 0), add_kink(s, 1, b->cyl.w, 0);
+        break;
+    case PROX_BODY_BOX:
+        for (int i = 0; i < 3; ++i)
+            add_kink(s, 0, b->box.a[i], 0), add_kink(s, 0, prox_v3_neg(b->box.a[i]), 0), add_kink(s, 1, b->box.a[i], 0);
+        break;
+    case PROX_BODY_POLY: {
+        const prox_polytope *p = &b->x.poly;
+        for (int f = 0; f < p->nf; ++f) add_kink(s, 0, prox_v3_scale(p->n[f], sg), 0);
+        for (int e = 0; e < p->ne; ++e) add_kink(s, 1, unit(prox_v3_sub(p->v[p->e[e][1]], p->v[p->e[e][0]])), 0);
+        break;
+    }
+    case PROX_BODY_CONE: {
+        const prox_cone *k = &b->x.cone;
+        double dr = k->r1 - k->r2; /* the lateral normal: D.w / |P D| = (r1 - r2) / (2 hh) */
+        add_kink(s, 0, k->w, 0), add_kink(s, 0, prox_v3_neg(k->w), 0);
+        add_kink(s, 1, k->w, sg * dr / prox_hypot2(dr, 2.0 * k->hh));
+        break;
+    }
+    case PROX_BODY_ECYL:
+        add_kink(s, 0, b->x.ecyl.w, 0), add_kink(s, 0, prox_v3_neg(b->x.ecyl.w), 0), add_kink(s, 1, b->x.ecyl.w, 0);
+        break;
+    default: break;
+    }
+}
+
+/* Angular distance from unit d to a kink (approximate off the kink, exact on it). */
+static double kink_dist(const cvx_kink *k, prox_vec3 d)
+{
+    if (!k->circle) return angle(d, k->w);
+    double s = sqrt(fmax(1e-300, 1.0 - k->c * k->c));
+    return fabs(prox_v3_dot(d, k->w) - k->c) / s;
+}
+
+/* The crossings of two kink circles: D = x w1 + y w2 +- z n; returns how many (0 or 2). */
+static int circle_cross(const cvx_kink *k1, const cvx_kink *k2, prox_vec3 out[2])
+{
+    prox_vec3 n = prox_v3_cross(k1->w, k2->w);
+    double nn = prox_v3_norm(n);
+    if (!(nn > PROX_TOL_PARALLEL)) return 0;
+    double m = prox_v3_dot(k1->w, k2->w), det = nn * nn;
+    double x = (k1->c - m * k2->c) / det, y = (k2->c - m * k1->c) / det;
+    prox_vec3 p = prox_v3_add(prox_v3_scale(k1->w, x), prox_v3_scale(k2->w, y));
+    double z2 = 1.0 - prox_v3_norm2(p);
+    if (z2 < -1e-12) return 0;
+    double z = sqrt(fmax(0.0, z2));
+    n = prox_v3_scale(n, 1.0 / nn);
+    out[0] = prox_v3_mad(p, z, n);
+    out[1] = prox_v3_mad(p, -z, n);
+    return 2;
+}
+
+/* ---- one-dimensional search along a kink circle ---------------------------------------------- */
+
+/* The circle D(th) = c w + s (cos th u + sin th v), s = sqrt(1 - c^2). */
+typedef struct cvx_circ {
+    prox_vec3 w, u, v;
+    double c, s;
+} cvx_circ;
+
+static cvx_circ circ_make(const cvx_kink *k)
+{
+    cvx_circ C = {k->w, prox_v3_any_perp(k->w), {0, 0, 0}, k->c, sqrt(fmax(0.0, 1.0 - k->c * k->c))};
+    C.v = prox_v3_cross(k->w, C.u);
+    return C;
+}
+
+static prox_vec3 circ_at(const cvx_circ *C, double th)
+{
+    return prox_v3_mad(prox_v3_scale(C->w, C->c), C->s, prox_v3_add(prox_v3_scale(C->u, cos(th)), prox_v3_scale(C->v, sin(th))));
+}
+
+/* d phi / d th: along the circle the support sets of its own kink are perpendicular to the tangent,
+ * so any support point gives the derivative. */
+static double circ_slope(const cvx *s, const cvx_circ *C, double th, prox_vec3 d)
+{
+    prox_vec3 t = prox_v3_scale(prox_v3_sub(prox_v3_scale(C->v, cos(th)), prox_v3_scale(C->u, sin(th))), C->s);
+    return prox_v3_dot(phi_grad(s, d), t);
+}
+
+/* Minimum of phi along the circle in [lo, hi]: the root of the slope by secant steps, every third a
+ * bisection (a kink of another body on the circle makes the slope jump: bisection reaches it).
+ * Every point is recorded; returns the root (the lower endpoint when the slope does not change sign). */
+static prox_vec3 circ_min(cvx *s, const cvx_circ *C, double lo, double hi)
+{
+    prox_vec3 dl = circ_at(C, lo), dh = circ_at(C, hi), bd = dl;
+    double gl = circ_slope(s, C, lo, dl), gh = circ_slope(s, C, hi, dh), fl = consider(s, dl), fh = consider(s, dh), bf = fl;
+    if (fh < bf) bf = fh, bd = dh;
+    if (!(gl < 0.0 && gh > 0.0)) return bd;
+    int it = 0;
+    for (; it < 100 && hi - lo > PROX_TOL_ANGLE; ++it) {
+        double th = lo - gl * (hi - lo) / (gh - gl);
+        if (!(th > lo && th < hi) || it % 3 == 2) th = 0.5 * (lo + hi);
+        prox_vec3 d = circ_at(C, th);
+        double g = circ_slope(s, C, th, d), f = consider(s, d);
+        if (f <= bf) bf = f, bd = d;
+        if (g > 0.0) hi = th, gh = g;
+        else if (g < 0.0) lo = th, gl = g;
+        else return d;
+    }
+    /* the root of the slope: where the value is flat to rounding (1e-8 rad around a smooth minimum)
+     * the stationary point, not the lowest value, gives the support points */
+    return it < 100 ? circ_at(C, 0.5 * (lo + hi)) : bd;
+}
+
+/* Angle of the projection of d on the circle's plane. */
+static double circ_angle(const cvx_circ *C, prox_vec3 d) { return atan2(prox_v3_dot(d, C->v), prox_v3_dot(d, C->u)); }
+
+/* The whole circle: samples with their slopes, every discrete minimum and every sign change of the
+ * slope refined (a valley between two samples that no sample's value shows). */
+static void circ_global(cvx *s, const cvx_kink *k)
+{
+    cvx_circ C = circ_make(k);
+    double f[CVX_CIRCLE_SAMPLES], g[CVX_CIRCLE_SAMPLES];
+    const double step = 2.0 * PROX_PI / CVX_CIRCLE_SAMPLES;
+    for (int i = 0; i < CVX_CIRCLE_SAMPLES; ++i) {
+        prox_vec3 d = circ_at(&C, i * step);
+        f[i] = consider(s, d);
+        g[i] = circ_slope(s, &C, i * step, d);
+    }
+    for (int i = 0; i < CVX_CIRCLE_SAMPLES; ++i) {
+        int ip = (i + CVX_CIRCLE_SAMPLES - 1) % CVX_CIRCLE_SAMPLES, in = (i + 1) % CVX_CIRCLE_SAMPLES;
+        if (f[i] <= f[ip] && f[i] <= f[in]) circ_min(s, &C, (i - 1) * step, (i + 1) * step);
+        if (g[i] < 0.0 && g[in] > 0.0) circ_min(s, &C, i * step, (i + 1) * step);
+    }
+}
+
+/* Kinks within r of d: points evaluated, circles searched within r of d's projection, crossings of
+ * two near circles evaluated. */
+static void kinks_local(cvx *s, prox_vec3 d, double r)
+{
+    for (int i = 0; i < s->nk; ++i) {
+        const cvx_kink *k = &s->k[i];
+        if (kink_dist(k, d) > r) continue;
+        if (!k->circle) { consider(s, k->w); continue; }
+        cvx_circ C = circ_make(k);
+        double th = circ_angle(&C, d), dr = r / fmax(C.s, 1e-3);
+        circ_min(s, &C, th - dr, th + dr);
+        for (int j = i + 1; j < s->nk; ++j) {
+            prox_vec3 x[2];
+            if (!s->k[j].circle || kink_dist(&s->k[j], d) > r) continue;
+            for (int m = circle_cross(k, &s->k[j], x) - 1; m >= 0; --m)
+                if (angle(x[m], d) <= 2.0 * r) consider(s, x[m]);
+        }
+    }
+}
+
+/* Every kink: points, the crossings of every two circles, every circle searched whole. */
+static void kinks_global(cvx *s)
+{
+    for (int i = 0; i < s->nk; ++i) {
+        if (!s->k[i].circle) { consider(s, s->k[i].w); continue; }
+        for (int j = i + 1; j < s->nk; ++j) {
+            prox_vec3 x[2];
+            if (!s->k[j].circle) continue;
+            for (int m = circle_cross(&s->k[i], &s->k[j], x) - 1; m >= 0; --m) consider(s, x[m]);
+        }
+        circ_global(s, &s->k[i]);
+    }
+}
+
+/* ---- Newton on the sphere ---------------------------------------------------------------------- */
+
+/* One Riemannian Newton step (steepest descent where the Hessian T^T H T - phi I is not positive
+ * definite) with backtracking; the accepted length, 0 when nothing decreased phi. */
+static double newton_step(cvx *s, prox_vec3 *dp, double *fp)
+{
+    prox_vec3 d = *dp, t1 = prox_v3_any_perp(d), t2 = prox_v3_cross(d, t1), g = phi_grad(s, d);
+    double f = *fp, g1 = prox_v3_dot(g, t1), g2 = prox_v3_dot(g, t2);
+    prox_vec3 h1 = phi_hess(s, d, t1), h2 = phi_hess(s, d, t2);
+    double a = prox_v3_dot(t1, h1) - f, b = prox_v3_dot(t1, h2), c = prox_v3_dot(t2, h2) - f, det = a * c - b * b, x1, x2;
+    if (a > 0.0 && det > 0.0) {
+        x1 = -(c * g1 - b * g2) / det;
+        x2 = -(a * g2 - b * g1) / det;
+        if (-0.5 * (g1 * x1 + g2 * x2) <= PROX_TOL_DECREMENT * s->S) return 0.0; /* decrement at rounding */
+    } else {
+        double sc = fabs(f) > 0.0 ? fabs(f) : 1.0;
+        x1 = -g1 / sc;
+        x2 = -g2 / sc;
+    }
+    double len = prox_hypot2(x1, x2);
+    if (!(len > 0.0)) return 0.0;
+    if (len > 0.5) x1 *= 0.5 / len, x2 *= 0.5 / len, len = 0.5;
+    for (int ls = 0; ls < 30; ++ls) {
+        prox_vec3 dn = unit(prox_v3_add(d, prox_v3_add(prox_v3_scale(t1, x1), prox_v3_scale(t2, x2))));
+        double fn = phi_eval(s, dn);
+        if (fn < f) {
+            *dp = dn, *fp = fn;
+            record(s, dn, fn);
+            return len;
+        }
+        x1 *= 0.5, x2 *= 0.5, len *= 0.5;
+    }
+    return 0.0;
+}
+
+static void cell_newton(cvx *s, prox_vec3 d)
+{
+    double f = phi_eval(s, d);
+    record(s, d, f);
+    for (int it = 0; it < 60; ++it)
+        if (newton_step(s, &d, &f) < PROX_TOL_STEP) break;
+}
+
+/* Norm of the tangential gradient. */
+static double tgrad(const cvx *s, prox_vec3 d)
+{
+    prox_vec3 g = phi_grad(s, d);
+    return prox_v3_norm(prox_v3_reject(g, d));
+}
+
+/* Pure Newton steps on the tangential gradient, kept while its norm decreases: the direction itself
+ * to rounding (the value stops improving ~1e-8 rad off the optimum, the support points do not). */
+static prox_vec3 polish_cell(const cvx *s, prox_vec3 d)
+{
+    double gn = tgrad(s, d);
+    for (int it = 0; it < 8 && gn > 0.0; ++it) {
+        double f = phi_eval(s, d);
+        prox_vec3 t1 = prox_v3_any_perp(d), t2 = prox_v3_cross(d, t1), g = phi_grad(s, d);
+        double g1 = prox_v3_dot(g, t1), g2 = prox_v3_dot(g, t2);
+        prox_vec3 h1 = phi_hess(s, d, t1), h2 = phi_hess(s, d, t2);
+        /* regularised (a touching rim has a rank-one Hessian and phi ~ 0: along the null direction
+         * the gradient vanishes too, the shift only keeps the solve defined) */
+        double mu = PROX_TOL_SEARCH * s->S;
+        double a = prox_v3_dot(t1, h1) - f + mu, b = prox_v3_dot(t1, h2), c = prox_v3_dot(t2, h2) - f + mu, det = a * c - b * b;
+        if (!(a > 0.0 && det > 0.0)) break;
+        double x1 = -(c * g1 - b * g2) / det, x2 = -(a * g2 - b * g1) / det;
+        if (!(prox_hypot2(x1, x2) < 0.1)) break;
+        prox_vec3 dn = unit(prox_v3_add(d, prox_v3_add(prox_v3_scale(t1, x1), prox_v3_scale(t2, x2))));
+        double gnn = tgrad(s, dn);
+        if (!(gnn < gn)) break;
+        d = dn, gn = gnn;
+    }
+    return d;
+}
+
+/* ---- GJK on P = A - B -------------------------------------------------------------------------- */
+
+/* A vertex of the simplex: w = pa - pb with pa in A and pb in B (relative coordinates). */
+typedef struct gjk_pt {
+    prox_vec3 w, pa, pb;
+} gjk_pt;
+
+/* The foot of the origin on the affine hull of a vertex, an edge or a triangle, with its direction
+ * accurate (a second rejection; a cross product): for a long feature passing close to the origin the
+ * barycentric combination carries eps |feature| in every direction. */
+static prox_vec3 face_foot(const gjk_pt *p, int m)
+{
+    if (m == 1) return p[0].w;
+    prox_vec3 e = prox_v3_sub(p[1].w, p[0].w);
+    if (m == 2) {
+        double ee = prox_v3_norm2(e);
+        prox_vec3 v = prox_v3_mad(p[0].w, -prox_v3_dot(p[0].w, e) / ee, e);
+        return prox_v3_mad(v, -prox_v3_dot(v, e) / ee, e);
+    }
+    prox_vec3 nrm = prox_v3_cross(e, prox_v3_sub(p[2].w, p[0].w));
+    return prox_v3_scale(nrm, prox_v3_dot(p[0].w, nrm) / prox_v3_norm2(nrm));
+}
+
+/* Closest point v to the origin of the hull of the n <= 4 points (Johnson's subalgorithm by
+ * enumeration of the faces: the nearest affine projection with positive barycentric coordinates);
+ * the points are reduced to that face and lam receives its coordinates. Returns 1 when the origin is
+ * inside the tetrahedron. */
+static int gjk_closest(gjk_pt p[4], int *n, prox_vec3 *v, double lam[4])
+{
+    double best = INFINITY, bl[4] = {1, 0, 0, 0};
+    int best_mask = 1, inside = 0;
+    for (int mask = 1; mask < (1 << *n); ++mask) {
+        prox_vec3 q[4], e[3];
+        int m = 0;
+        for (int i = 0; i < *n; ++i)
+            if (mask >> i & 1) q[m++] = p[i].w;
+        double G[3][4] = {{0}}, mu[3] = {0, 0, 0};
+        for (int i = 1; i < m; ++i) e[i - 1] = prox_v3_sub(q[i], q[0]);
+        for (int i = 0; i < m - 1; ++i) {
+            for (int j = 0; j < m - 1; ++j) G[i][j] = prox_v3_dot(e[i], e[j]);
+            G[i][3] = -prox_v3_dot(e[i], q[0]);
+        }
+        int ok = 1;
+        for (int c = 0; c < m - 1 && ok; ++c) {
+            if (!(G[c][c] > 1e-24 * (G[0][0] + 1e-300))) ok = 0;
+            for (int r = c + 1; r < m - 1 && ok; ++r) {
+                double f = G[r][c] / G[c][c];
+                for (int k = c; k < 4; ++k) G[r][k] -= f * G[c][k];
+            }
+        }
+        /* four points nearly in a plane (support points on a flat face of P): their hull is covered
+         * by its triangles, and the barycentric solve would be rounding noise */
+        if (ok && m == 4) {
+            double vol = fabs(prox_v3_dot(e[0], prox_v3_cross(e[1], e[2])));
+            ok = vol > 1e-10 * prox_v3_norm(e[0]) * prox_v3_norm(e[1]) * prox_v3_norm(e[2]);
+        }
+        if (!ok) continue;
+        for (int c = m - 2; c >= 0; --c) {
+            double t = G[c][3];
+            for (int k = c + 1; k < m - 1; ++k) t -= G[c][k] * mu[k];
+            mu[c] = t / G[c][c];
+        }
+        double l0 = 1.0;
+        int pos = 1;
+        for (int i = 0; i < m - 1; ++i) l0 -= mu[i], pos &= mu[i] > 0.0;
+        if (!(pos && l0 > 0.0)) continue;
+        prox_vec3 x = q[0];
+        for (int i = 0; i < m - 1; ++i) x = prox_v3_mad(x, mu[i], e[i]);
+        double xx = m == 4 ? 0.0 : prox_v3_norm2(x);
+        if (xx < best) {
+            best = xx, best_mask = mask, *v = x, bl[0] = l0;
+            for (int i = 0; i < m - 1; ++i) bl[i + 1] = mu[i];
+            inside = m == 4;
+        }
+        if (inside) break;
+    }
+    int m = 0;
+    for (int i = 0; i < *n; ++i)
+        if (best_mask >> i & 1) p[m] = p[i], lam[m] = bl[m], ++m;
+    *n = m;
+    if (!inside) *v = face_foot(p, m);
+    return inside;
+}
+
+typedef struct gjk_out {
+    int verdict;      /* 1 separated, 0 origin enclosed (overlap), 2 undecided (touching band, stall) */
+    prox_vec3 xa, xb; /* the simplex's pair: xa in A, xb in B (a common point when enclosed) */
+    double vnorm;     /* |xa - xb| (an upper bound on the distance) */
+} gjk_out;
+
+static gjk_pt gjk_support(const cvx *s, prox_vec3 d)
+{
+    gjk_pt q;
+    q.pa = prox_v3_add(s->a.c, prox_body_pc(&s->a, d));
+    q.pb = prox_v3_add(s->b.c, prox_body_pc(&s->b, prox_v3_neg(d)));
+    q.w = prox_v3_sub(q.pa, q.pb);
+    return q;
+}
+
+/* GJK (Gilbert, Johnson & Keerthi 1988) from the point cA - cB of P. Every direction tried is
+ * recorded; it stops when |v| and -phi meet to a few ulps of S (polytope pairs: exactly), when the
+ * origin is enclosed, or when no new support point appears. */
+static gjk_out gjk_run(cvx *s)
+{
+    gjk_pt p[4];
+    p[0].pa = s->a.c, p[0].pb = s->b.c, p[0].w = prox_v3_sub(s->a.c, s->b.c);
+    double lam[4] = {1, 0, 0, 0}, tol = PROX_TOL_SNAP * s->S, floor2 = 256.0 * tol * tol;
+    prox_vec3 v = p[0].w;
+    int n = 1, separated = 0, verdict = -1;
+    for (int it = 0; it < CVX_GJK_IT && verdict < 0; ++it) {
+        double vv = prox_v3_norm2(v);
+        if (!(vv > floor2)) { verdict = 2; break; }
+        prox_vec3 d = prox_v3_scale(v, -1.0 / sqrt(vv));
+        double f = phi_eval(s, d);
+        record(s, d, f);
+        separated |= f < 0.0;
+        if (separated && sqrt(vv) + f <= tol) { verdict = 1; break; }
+        gjk_pt q = gjk_support(s, d);
+        int dup = 0;
+        for (int i = 0; i < n; ++i) dup |= prox_v3_norm2(prox_v3_sub(q.w, p[i].w)) <= floor2;
+        if (dup) break;
+        p[n++] = q;
+        double vv0 = vv;
+        if (gjk_closest(p, &n, &v, lam)) {
+            verdict = separated ? 1 : 0; /* a separating direction outranks a rounded enclosure */
+            break;
+        }
+        if (!(prox_v3_norm2(v) < vv0)) break;
+    }
+    if (verdict < 0) verdict = separated ? 1 : 2;
+    gjk_out o = {verdict, {0, 0, 0}, {0, 0, 0}, 0.0};
+    for (int i = 0; i < n; ++i) o.xa = prox_v3_mad(o.xa, lam[i], p[i].pa), o.xb = prox_v3_mad(o.xb, lam[i], p[i].pb);
+    o.vnorm = prox_v3_dist(o.xa, o.xb);
+    return o;
+}
+
+/* ---- support sets ------------------------------------------------------------------------------ */
+
+/* A support set (relative coordinates): the hull of nv points (1 a point, 2 a segment, more a
+ * polygon, any order), or an elliptical disk c + x e1 + y e2 with x^2 + y^2 <= 1 (ell = 1). */
+typedef struct cvx_set {
+    int nv, ell;
+    prox_vec3 v[PROX_POLY_MAXV], c, e1, e2;
+} cvx_set;
+
+static cvx_set set_point(prox_vec3 p)
+{
+    cvx_set f = {0};
+    f.nv = 1;
+    f.v[0] = p;
+    return f;
+}
+
+static cvx_set set_segment(prox_vec3 m, prox_vec3 e, double h)
+{
+    cvx_set f = {0};
+    f.nv = 2;
+    f.v[0] = prox_v3_mad(m, -h, e);
+    f.v[1] = prox_v3_mad(m, h, e);
+    return f;
+}
+
+static cvx_set set_ellipse(prox_vec3 c, prox_vec3 e1, prox_vec3 e2)
+{
+    cvx_set f = {0};
+    f.ell = 1, f.c = c, f.e1 = e1, f.e2 = e2;
+    return f;
+}
+
+/* The side line of a cylinder-like body (axis w, half height hh) through the radial support point
+ * rad, when d is within ftol of perpendicular to the axis. */
+static int axial_set(prox_vec3 c, prox_vec3 w, double hh, prox_vec3 d, double ftol, prox_vec3 rad, cvx_set *f)
+{
+    if (!(fabs(prox_v3_dot(d, w)) <= ftol)) return 0;
+    *f = set_segment(prox_v3_add(c, rad), w, hh);
+    return 1;
+}
+
+static cvx_set box_set(const prox_body *b, prox_vec3 d, double ftol)
+{
+    prox_vec3 c = b->c, e[2];
+    double h[2];
+    int m = 0;
+    for (int i = 0; i < 3; ++i) {
+        double di = prox_v3_dot(d, b->box.a[i]);
+        if (fabs(di) <= ftol && m < 2) e[m] = b->box.a[i], h[m++] = b->box.h[i];
+        else c = prox_v3_mad(c, di >= 0.0 ? b->box.h[i] : -b->box.h[i], b->box.a[i]);
+    }
+    if (m == 0) return set_point(c);
+    if (m == 1) return set_segment(c, e[0], h[0]);
+    cvx_set f = {0};
+    static const double sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
+    f.nv = 4;
+    for (int i = 0; i < 4; ++i) f.v[i] = prox_v3_mad(prox_v3_mad(c, sx[i] * h[0], e[0]), sy[i] * h[1], e[1]);
+    return f;
+}
+
+static cvx_set poly_set(const prox_body *b, prox_vec3 d, double ftol)
+{
+    const prox_polytope *p = &b->x.poly;
+    double hc = prox_polytope_hc(p, d), lim = hc - ftol * p->size;
+    cvx_set f = {0};
+    for (int i = 0; i < p->nv; ++i)
+        if (prox_v3_dot(d, p->v[i]) >= lim) f.v[f.nv++] = prox_v3_add(b->c, p->v[i]);
+    return f;
+}
+
+static cvx_set cone_set(const prox_body *b, prox_vec3 d, double ftol)
+{
+    const prox_cone *k = &b->x.cone;
+    double t = prox_v3_dot(d, k->w);
+    prox_vec3 perp = prox_v3_reject(d, k->w);
+    double pn = prox_v3_norm(perp);
+    if (pn <= ftol) {
+        double r = t >= 0.0 ? k->r2 : k->r1;
+        prox_vec3 c = prox_v3_mad(b->c, t >= 0.0 ? k->hh : -k->hh, k->w), u = prox_v3_any_perp(k->w);
+        if (!(r > 0.0)) return set_point(c);
+        return set_ellipse(c, prox_v3_scale(u, r), prox_v3_scale(prox_v3_cross(k->w, u), r));
+    }
+    double top = k->hh * t + k->r2 * pn, base = -k->hh * t + k->r1 * pn;
+    if (fabs(top - base) <= ftol * (2.0 * k->hh + fabs(k->r1 - k->r2))) {
+        prox_vec3 u = prox_v3_scale(perp, 1.0 / pn);
+        cvx_set f = {0};
+        f.nv = 2;
+        f.v[0] = prox_v3_add(b->c, prox_v3_mad(prox_v3_scale(k->w, -k->hh), k->r1, u));
+        f.v[1] = prox_v3_add(b->c, prox_v3_mad(prox_v3_scale(k->w, k->hh), k->r2, u));
+        return f;
+    }
+    return set_point(prox_v3_add(b->c, prox_cone_pc(k, d)));
+}
+
+/* Support set of body b in unit direction d (relative coordinates), faces within ftol included (|sin|
+ * of the angle between d and the face normal, or between d and perpendicular to a side). */
+static cvx_set support_set(const prox_body *b, prox_vec3 d, double ftol)
+{
+    cvx_set f;
+    switch (b->kind) {
+    case PROX_BODY_CYL: {
+        prox_vec3 perp = prox_v3_reject(d, b->cyl.w), w = b->cyl.w;
+        double pn = prox_v3_norm(perp), t = prox_v3_dot(d, w);
+        if (pn <= ftol) {
+            prox_vec3 u = prox_v3_any_perp(w);
+            return set_ellipse(prox_v3_mad(b->c, t >= 0.0 ? b->cyl.hh : -b->cyl.hh, w), prox_v3_scale(u, b->cyl.r),
+                               prox_v3_scale(prox_v3_cross(w, u), b->cyl.r));
+        }
+        if (axial_set(b->c, w, b->cyl.hh, d, ftol, prox_v3_scale(perp, b->cyl.r / pn), &f)) return f;
+        break;
+    }
+    case PROX_BODY_ECYL: {
+        const prox_ecyl *k = &b->x.ecyl;
+        double x1 = prox_v3_dot(d, k->u1), x2 = prox_v3_dot(d, k->u2), t = prox_v3_dot(d, k->w);
+        if (prox_hypot2(x1, x2) <= ftol)
+            return set_ellipse(prox_v3_mad(b->c, t >= 0.0 ? k->hh : -k->hh, k->w), prox_v3_scale(k->u1, k->a1),
+                               prox_v3_scale(k->u2, k->a2));
+        double s1 = k->a1 * k->a1 * x1, s2 = k->a2 * k->a2 * x2, q = sqrt(s1 * x1 + s2 * x2);
+        prox_vec3 rad = prox_v3_scale(prox_v3_add(prox_v3_scale(k->u1, s1), prox_v3_scale(k->u2, s2)), 1.0 / q);
+        if (axial_set(b->c, k->w, k->hh, d, ftol, rad, &f)) return f;
+        break;
+    }
+    case PROX_BODY_BOX: return box_set(b, d, ftol);
+    case PROX_BODY_POLY: return poly_set(b, d, ftol);
+    case PROX_BODY_CONE: return cone_set(b, d, ftol);
+    default: break;
+    }
+    return set_point(prox_v3_add(b->c, prox_body_pc(b, d)));
+}
+
+/* ---- closest pair of two support sets seen along n (in the plane perpendicular to n) ------------ */
+
+typedef struct v2 {
+    double x, y;
+} v2;
+
+static v2 v2_sub(v2 a, v2 b) { v2 r = {a.x - b.x, a.y - b.y}; return r; }
+static v2 v2_mad(v2 a, double s, v2 b) { v2 r = {a.x + s * b.x, a.y + s * b.y}; return r; }
+static double v2_dot(v2 a, v2 b) { return a.x * b.x + a.y * b.y; }
+static double v2_cross(v2 a, v2 b) { return a.x * b.y - a.y * b.x; }
+static double v2_norm(v2 a) { return prox_hypot2(a.x, a.y); }
+
+/* A set seen along n: a convex polygon (hull of the set's points, counter-clockwise, idx naming the
+ * 3D points) or an ellipse q + E z, |z| <= 1 (E columns E1, E2). */
+typedef struct set2 {
+    int nv, ell;
+    v2 v[PROX_POLY_MAXV], q, E1, E2;
+    int idx[PROX_POLY_MAXV];
+    double det;
+} set2;
+
+typedef struct frame2 {
+    prox_vec3 o, u, v;
+} frame2;
+
+static v2 to2(const frame2 *F, prox_vec3 x)
+{
+    prox_vec3 d = prox_v3_sub(x, F->o);
+    v2 r = {prox_v3_dot(d, F->u), prox_v3_dot(d, F->v)};
+    return r;
+}
+
+static int v2_less(v2 a, v2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
+
+/* Convex hull of the projected points (Andrew's monotone chain), collinear points dropped. */
+static void hull2(const v2 *p, int n, set2 *s)
+{
+    int ord[PROX_POLY_MAXV];
+    for (int i = 0; i < n; ++i) ord[i] = i;
+    for (int i = 1; i < n; ++i) /* insertion sort by (x, y) */
+        for (int j = i; j > 0 && v2_less(p[ord[j]], p[ord[j - 1]]); --j) {
+            int t = ord[j];
+            ord[j] = ord[j - 1], ord[j - 1] = t;
+        }
+    int h[2 * PROX_POLY_MAXV + 2], m = 0;
+    for (int pass = 0; pass < 2; ++pass) {
+        int start = m;
+        for (int ii = 0; ii < n; ++ii) {
+            int i = pass == 0 ? ord[ii] : ord[n - 1 - ii];
+            while (m >= start + 2 && v2_cross(v2_sub(p[h[m - 1]], p[h[m - 2]]), v2_sub(p[i], p[h[m - 2]])) <= 0.0) --m;
+            h[m++] = i;
+        }
+        --m; /* the last point starts the other chain */
+    }
+    if (m < 1) m = 1, h[0] = ord[0];
+    if (m == 2 && v2_norm(v2_sub(p[h[0]], p[h[1]])) == 0.0) m = 1;
+    s->nv = m;
+    for (int i = 0; i < m; ++i) s->v[i] = p[h[i]], s->idx[i] = h[i];
+}
+
+static set2 set_2d(const frame2 *F, const cvx_set *f)
+{
+    set2 s = {0};
+    if (f->ell) {
+        s.ell = 1;
+        s.q = to2(F, f->c);
+        s.E1.x = prox_v3_dot(f->e1, F->u), s.E1.y = prox_v3_dot(f->e1, F->v);
+        s.E2.x = prox_v3_dot(f->e2, F->u), s.E2.y = prox_v3_dot(f->e2, F->v);
+        s.det = v2_cross(s.E1, s.E2);
+        return s;
+    }
+    v2 p[PROX_POLY_MAXV];
+    for (int i = 0; i < f->nv; ++i) p[i] = to2(F, f->v[i]);
+    hull2(p, f->nv, &s);
+    return s;
+}
+
+/* z = E^-1 (x - q): the ellipse's own coordinates (the unit disk). */
+static v2 ell_local(const set2 *E, v2 x)
+{
+    v2 r = v2_sub(x, E->q), z = {(r.x * E->E2.y - r.y * E->E2.x) / E->det, (E->E1.x * r.y - E->E1.y * r.x) / E->det};
+    return z;
+}
+
+static v2 ell_point(const set2 *E, v2 z)
+{
+    v2 x = {E->q.x + z.x * E->E1.x + z.y * E->E2.x, E->q.y + z.x * E->E1.y + z.y * E->E2.y};
+    return x;
+}
+
+/* Nearest point of the elliptical disk to x: z(lambda) = (G + lambda I)^-1 E^T (x - q), G = E^T E,
+ * with |z| = 1 (the secular equation, convex and decreasing in lambda: Newton from 0 is monotone). */
+static v2 ell_proj(const set2 *E, v2 x)
+{
+    v2 z0 = ell_local(E, x);
+    if (v2_dot(z0, z0) <= 1.0) return x;
+    double g11 = v2_dot(E->E1, E->E1), g12 = v2_dot(E->E1, E->E2), g22 = v2_dot(E->E2, E->E2);
+    double m = 0.5 * (g11 + g22), dd = prox_hypot2(0.5 * (g11 - g22), g12), l1 = m + dd, l2 = (g11 * g22 - g12 * g12) / l1;
+    v2 e1 = {g12, l1 - g11}, e1b = {l1 - g22, g12};
+    if (v2_norm(e1b) > v2_norm(e1)) e1 = e1b;
+    double en = v2_norm(e1);
+    if (!(en > 0.0)) e1.x = g11 >= g22 ? 1.0 : 0.0, e1.y = g11 >= g22 ? 0.0 : 1.0, en = 1.0;
+    e1.x /= en, e1.y /= en;
+    v2 e2 = {-e1.y, e1.x}, r = v2_sub(x, E->q), bt = {v2_dot(E->E1, r), v2_dot(E->E2, r)};
+    double b1 = v2_dot(bt, e1), b2 = v2_dot(bt, e2), lam = 0.0;
+    for (int it = 0; it < 200; ++it) {
+        double q1 = b1 / (l1 + lam), q2 = b2 / (l2 + lam), F = q1 * q1 + q2 * q2 - 1.0;
+        double dF = -2.0 * (q1 * q1 / (l1 + lam) + q2 * q2 / (l2 + lam));
+        if (!(F > 0.0) || !(dF < 0.0)) break;
+        double step = -F / dF;
+        lam += step;
+        if (step <= 1e-17 * (lam + l1)) break;
+    }
+    v2 z = {b1 / (l1 + lam), b2 / (l2 + lam)}, zz = {z.x * e1.x + z.y * e2.x, z.x * e1.y + z.y * e2.y};
+    double zn = v2_norm(zz);
+    if (zn > 0.0) zz.x /= zn, zz.y /= zn;
+    return ell_point(E, zz);
+}
+
+static v2 seg2_closest(v2 a, v2 b, v2 q)
+{
+    v2 e = v2_sub(b, a);
+    double ee = v2_dot(e, e), t = ee > 0.0 ? v2_dot(v2_sub(q, a), e) / ee : 0.0;
+    return v2_mad(a, t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t), e);
+}
+
+static v2 poly2_closest(const set2 *P, v2 q)
+{
+    if (P->nv == 1) return P->v[0];
+    if (P->nv == 2) return seg2_closest(P->v[0], P->v[1], q);
+    int in = 1;
+    for (int i = 0; i < P->nv && in; ++i) in = v2_cross(v2_sub(P->v[(i + 1) % P->nv], P->v[i]), v2_sub(q, P->v[i])) >= 0.0;
+    if (in) return q;
+    v2 best = P->v[0];
+    double bd = INFINITY;
+    for (int i = 0; i < P->nv; ++i) {
+        v2 x = seg2_closest(P->v[i], P->v[(i + 1) % P->nv], q);
+        double d = v2_norm(v2_sub(x, q));
+        if (d < bd) bd = d, best = x;
+    }
+    return best;
+}
+
+static v2 set2_proj(const set2 *S, v2 x) { return S->ell ? ell_proj(S, x) : poly2_closest(S, x); }
+
+static void pair2_offer(v2 x, v2 y, v2 *bx, v2 *by, double *bd)
+{
+    double d = v2_norm(v2_sub(x, y));
+    if (d < *bd) *bd = d, *bx = x, *by = y;
+}
+
+static int nedges(const set2 *P) { return P->nv == 2 ? 1 : (P->nv >= 3 ? P->nv : 0); }
+
+/* Closest pair of two convex polygons: a vertex of one against the other, or two crossing edges. */
+static void poly2_pair(const set2 *P, const set2 *Q, v2 *x, v2 *y)
+{
+    double bd = INFINITY;
+    for (int i = 0; i < P->nv; ++i) pair2_offer(P->v[i], poly2_closest(Q, P->v[i]), x, y, &bd);
+    for (int j = 0; j < Q->nv; ++j) pair2_offer(poly2_closest(P, Q->v[j]), Q->v[j], x, y, &bd);
+    for (int i = 0; i < nedges(P); ++i)
+        for (int j = 0; j < nedges(Q); ++j) {
+            v2 a = P->v[i], b = P->v[(i + 1) % P->nv], c = Q->v[j], d = Q->v[(j + 1) % Q->nv];
+            double d1 = v2_cross(v2_sub(b, a), v2_sub(c, a)), d2 = v2_cross(v2_sub(b, a), v2_sub(d, a));
+            double d3 = v2_cross(v2_sub(d, c), v2_sub(a, c)), d4 = v2_cross(v2_sub(d, c), v2_sub(b, c));
+            if (d1 * d2 < 0.0 && d3 * d4 < 0.0) {
+                v2 z = v2_mad(a, d3 / (d3 - d4), v2_sub(b, a));
+                pair2_offer(z, z, x, y, &bd);
+            }
+        }
+}
+
+/* A common point of a polygon and an ellipse: a polygon point or edge point inside the ellipse (its
+ * nearest point to the centre in the ellipse's coordinates), or the centre inside the polygon. */
+static int poly_ell_common(const set2 *P, const set2 *E, v2 *x)
+{
+    v2 o = {0, 0};
+    for (int i = 0; i < (P->nv == 1 ? 1 : nedges(P)); ++i) {
+        v2 a = ell_local(E, P->v[i]), b = ell_local(E, P->v[(i + 1) % P->nv]), z = seg2_closest(a, b, o);
+        if (v2_dot(z, z) <= 1.0) {
+            v2 ab = v2_sub(b, a);
+            double ee = v2_dot(ab, ab), t = ee > 0.0 ? v2_dot(v2_sub(z, a), ab) / ee : 0.0;
+            *x = v2_mad(P->v[i], t, v2_sub(P->v[(i + 1) % P->nv], P->v[i]));
+            return 1;
+        }
+    }
+    if (P->nv >= 3 && v2_norm(v2_sub(poly2_closest(P, E->q), E->q)) == 0.0) { *x = E->q; return 1; }
+    return 0;
+}
+
+/* Closest pair (x in S, y in T) of two sets seen along n. Polygons exactly; with an ellipse, a common
+ * point when one is found, else alternating projections (they converge to the closest pair). */
+static void set2_pair(const set2 *S, const set2 *T, v2 *x, v2 *y)
+{
+    if (!S->ell && !T->ell) { poly2_pair(S, T, x, y); return; }
+    if (!S->ell && poly_ell_common(S, T, x)) { *y = *x; return; }
+    if (!T->ell && poly_ell_common(T, S, x)) { *y = *x; return; }
+    if (S->ell && T->ell) {
+        v2 zt = ell_local(T, S->q), zs = ell_local(S, T->q);
+        if (v2_dot(zt, zt) <= 1.0) { *x = *y = S->q; return; }
+        if (v2_dot(zs, zs) <= 1.0) { *x = *y = T->q; return; }
+    }
+    v2 a = S->ell ? S->q : S->v[0], b = set2_proj(T, a);
+    double scale = v2_norm(a) + v2_norm(b) + 1.0;
+    for (int it = 0; it < 400; ++it) {
+        v2 an = set2_proj(S, b), bn = set2_proj(T, an);
+        double mv = v2_norm(v2_sub(an, a)) + v2_norm(v2_sub(bn, b));
+        a = an, b = bn;
+        if (mv <= 1e-17 * scale) break;
+    }
+    *x = a, *y = b;
+}
+
+/* The point of the 3D set f seen at X (X in its 2D image s): the same convex combination. */
+static prox_vec3 lift(const cvx_set *f, const set2 *s, v2 X)
+{
+    if (f->ell) {
+        v2 z = ell_local(s, X);
+        double zn = v2_norm(z);
+        if (zn > 1.0) z.x /= zn, z.y /= zn;
+        return prox_v3_mad(prox_v3_mad(f->c, z.x, f->e1), z.y, f->e2);
+    }
+    if (s->nv == 1) return f->v[s->idx[0]];
+    if (s->nv == 2) {
+        v2 e = v2_sub(s->v[1], s->v[0]);
+        double ee = v2_dot(e, e), t = ee > 0.0 ? v2_dot(v2_sub(X, s->v[0]), e) / ee : 0.0;
+        t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+        return prox_v3_mad(f->v[s->idx[0]], t, prox_v3_sub(f->v[s->idx[1]], f->v[s->idx[0]]));
+    }
+    /* the fan triangle (0, i, i + 1) with the largest smallest barycentric coordinate */
+    double best = -INFINITY, bl[3] = {1, 0, 0};
+    int bi = 1;
+    for (int i = 1; i + 1 < s->nv; ++i) {
+        v2 a = s->v[0], b = s->v[i], c = s->v[i + 1];
+        double den = v2_cross(v2_sub(b, a), v2_sub(c, a));
+        if (!(fabs(den) > 0.0)) continue;
+        double l1 = v2_cross(v2_sub(X, a), v2_sub(c, a)) / den, l2 = v2_cross(v2_sub(b, a), v2_sub(X, a)) / den, l0 = 1.0 - l1 - l2;
+        double mn = fmin(l0, fmin(l1, l2));
+        if (mn > best) best = mn, bi = i, bl[0] = l0, bl[1] = l1, bl[2] = l2;
+    }
+    double sum = 0.0;
+    for (int k = 0; k < 3; ++k) bl[k] = fmax(bl[k], 0.0), sum += bl[k];
+    prox_vec3 p = prox_v3_scale(f->v[s->idx[0]], bl[0] / sum);
+    p = prox_v3_mad(p, bl[1] / sum, f->v[s->idx[bi]]);
+    return prox_v3_mad(p, bl[2] / sum, f->v[s->idx[bi + 1]]);
+}
+
+/* The pair of points of sets fa (of A) and fb (of B) closest when seen along n. */
+static void sets_pair(const cvx_set *fa, const cvx_set *fb, prox_vec3 n, prox_vec3 *p1, prox_vec3 *p2)
+{
+    frame2 F = {fa->ell ? fa->c : fa->v[0], prox_v3_any_perp(n), {0, 0, 0}};
+    F.v = prox_v3_cross(n, F.u);
+    set2 sa = set_2d(&F, fa), sb = set_2d(&F, fb);
+    v2 X = {0, 0}, Y = {0, 0};
+    set2_pair(&sa, &sb, &X, &Y);
+    *p1 = lift(fa, &sa, X);
+    *p2 = lift(fb, &sb, Y);
+}
+
+/* ---- witnesses ------------------------------------------------------------------------------- */
+
+/* Two readings of each support set: with faces within PROX_TOL_FACE (MCNP decks print directions to
+ * ~10 digits: a face that close to the normal is the contact) and within rounding (PROX_TOL_NOISE:
+ * a face tilted by more is one extreme point, which is exact where the tilted face's lift is not). */
+static const double cvx_ftol[2] = {PROX_TOL_FACE, PROX_TOL_NOISE};
+
+/* Disjoint: the closest pair of the support sets along n over the readings, polished by alternating
+ * exact projections onto the solids (which never increase |p2 - p1| and keep p1 in A, p2 in B). */
+static double witness_disjoint(const cvx *s, prox_vec3 n, prox_vec3 *p1, prox_vec3 *p2)
+{
+    double best = INFINITY;
+    for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j) {
+            cvx_set fa = support_set(&s->a, n, cvx_ftol[i]), fb = support_set(&s->b, prox_v3_neg(n), cvx_ftol[j]);
+            prox_vec3 x, y;
+            sets_pair(&fa, &fb, n, &x, &y);
+            double d = prox_v3_dist(x, y);
+            /* a touching corner against a rim off the optimal normal converges at ~0.75 a step */
+            for (int it = 0; it < 96; ++it) {
+                prox_vec3 yn = prox_body_closest(&s->b, x), xn = prox_body_closest(&s->a, yn);
+                double dn = prox_v3_dist(xn, yn);
+                if (!(dn < d)) break;
+                x = xn, y = yn, d = dn;
+            }
+            if (d < best) best = d, *p1 = x, *p2 = y;
+        }
+    return best;
+}
+
+/* Overlapping: the pair of the support sets (p1 on A's supporting plane, p2 on B's) whose difference
+ * is closest to sd n over the readings (the sets seen along n meet at the optimum); returns that
+ * distance. */
+static double witness_overlap(const cvx *s, prox_vec3 n, double sd, prox_vec3 *p1, prox_vec3 *p2)
+{
+    double best = INFINITY;
+    for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j) {
+            cvx_set fa = support_set(&s->a, n, cvx_ftol[i]), fb = support_set(&s->b, prox_v3_neg(n), cvx_ftol[j]);
+            prox_vec3 x, y;
+            sets_pair(&fa, &fb, n, &x, &y);
+            double e = prox_v3_norm(prox_v3_mad(prox_v3_sub(y, x), -sd, n));
+            if (e < best) best = e, *p1 = x, *p2 = y;
+        }
+    return best;
+}
+
+/* Candidate normals of an answer: the best direction, its Newton polish, and the kinks it is
+ * within CVX_NEAR of (a point; the optimum on a circle; two circles' crossing): a search that ended
+ * 1e-8 rad off a kink has the right value but support points off by radius x angle. */
+static int answer_candidates(cvx *s, prox_vec3 *c, int max)
+{
+    int nc = 0;
+    prox_vec3 d0 = s->best_d;
+    c[nc++] = d0;
+    c[nc++] = polish_cell(s, d0);
+    for (int i = 0; i < s->nk && nc < max; ++i) {
+        const cvx_kink *k = &s->k[i];
+        if (kink_dist(k, d0) > CVX_NEAR) continue;
+        if (!k->circle) { c[nc++] = k->w; continue; }
+        cvx_circ C = circ_make(k);
+        double th = circ_angle(&C, d0), dr = 2.0 * CVX_NEAR / fmax(C.s, 1e-3);
+        c[nc++] = circ_min(s, &C, th - dr, th + dr);
+        for (int j = i + 1; j < s->nk && nc + 2 <= max; ++j) {
+            prox_vec3 x[2];
+            if (!s->k[j].circle || kink_dist(&s->k[j], d0) > CVX_NEAR) continue;
+            for (int m = circle_cross(k, &s->k[j], x) - 1; m >= 0; --m)
+                if (angle(x[m], d0) <= 4.0 * CVX_NEAR) c[nc++] = x[m];
+        }
+    }
+    return nc;
+}
+
+typedef struct cvx_answer {
+    double lower, upper;  /* -phi at the best direction, |p2 - p1| */
+    prox_vec3 n, p1, p2;
+} cvx_answer;
+
+/* The closest candidate pair; among pairs equally close to rounding, the one whose p2 - p1 is best
+ * aligned with its normal. The simplex pair of GJK, polished, is a candidate too. */
+static cvx_answer finish_disjoint(cvx *s, const gjk_out *g)
+{
+    prox_vec3 c[24];
+    int nc = answer_candidates(s, c, 24);
+    cvx_answer r = {-s->best_phi, INFINITY, s->best_d, {0, 0, 0}, {0, 0, 0}};
+    double align = INFINITY, tie = PROX_TOL_SNAP * s->S;
+    for (int k = 0; k < nc; ++k) {
+        prox_vec3 x = {0, 0, 0}, y = x;
+        double dk = witness_disjoint(s, c[k], &x, &y);
+        double ak = prox_v3_norm(prox_v3_mad(prox_v3_sub(y, x), -dk, c[k]));
+        if (dk < r.upper - tie || (dk <= r.upper + tie && ak < align)) {
+            if (dk < r.upper) r.upper = dk;
+            align = ak, r.p1 = x, r.p2 = y, r.n = c[k];
+        }
+    }
+    if (g && g->verdict == 1 && g->vnorm < r.upper - tie) {
+        prox_vec3 x = g->xa, y = g->xb;
+        r.upper = g->vnorm, r.p1 = x, r.p2 = y, r.n = s->best_d;
+    }
+    r.upper = prox_v3_dist(r.p1, r.p2);
+    r.lower = -s->best_phi;
+    return r;
+}
+
+/* Disjoint pairs: phi/|D| has convex sublevel sets below 0, so the local search is global: Newton in
+ * the cell, the kinks near the best direction, again until nothing moves. */
+static void search_disjoint(cvx *s)
+{
+    for (int pass = 0; pass < 4; ++pass) {
+        prox_vec3 d0 = s->best_d;
+        cell_newton(s, d0);
+        kinks_local(s, s->best_d, CVX_LOCAL);
+        if (pass > 0 && prox_v3_dot(d0, s->best_d) == 1.0) break;
+    }
+}
+
+static cvx_answer solve_disjoint(cvx *s, const gjk_out *g, prox_convex_info *info)
+{
+    search_disjoint(s);
+    cvx_answer r = finish_disjoint(s, g);
+    if (r.upper - r.lower > PROX_TOL_CERT * s->S) {
+        /* the slow path: a search stalled on a kink the local list missed; every kink searched whole */
+        atomic_fetch_add(&cvx_global_runs, 1);
+        info->global = 1;
+        kinks_global(s);
+        search_disjoint(s);
+        cvx_answer r2 = finish_disjoint(s, g);
+        if (r2.upper - r2.lower < r.upper - r.lower) r = r2;
+    }
+    info->certified = r.upper - r.lower <= PROX_TOL_CERT * s->S;
+    return r;
+}
+
+/* ---- depth: global search and its certificate ----------------------------------------------------- */
+
+static const double cvx_ico_v[12][3] = {
+    {-1, CVX_GOLD, 0}, {1, CVX_GOLD, 0}, {-1, -CVX_GOLD, 0}, {1, -CVX_GOLD, 0},
+    {0, -1, CVX_GOLD}, {0, 1, CVX_GOLD}, {0, -1, -CVX_GOLD}, {0, 1, -CVX_GOLD},
+    {CVX_GOLD, 0, -1}, {CVX_GOLD, 0, 1}, {-CVX_GOLD, 0, -1}, {-CVX_GOLD, 0, 1}};
+static const unsigned char cvx_ico_f[20][3] = {
+    {0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+    {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8}, {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+
+static prox_vec3 ico_vertex(int i) { return unit(prox_v3(cvx_ico_v[i][0], cvx_ico_v[i][1], cvx_ico_v[i][2])); }
+
+/* Over the cap of radius rho around unit c, the range [amin, amax] of the angle to the unit axis w. */
+static void cap_angles(prox_vec3 w, prox_vec3 c, double rho, double *amin, double *amax)
+{
+    double al = angle(c, w);
+    *amin = fmax(0.0, al - rho);
+    *amax = fmin(PROX_PI, al + rho);
+}
+
+/* min over the angle range of hh |cos a| + r sin a (concave in cos a on each side of a = pi/2). */
+static double lateral_min(double hh, double r, double amin, double amax)
+{
+    double f = fmin(hh * fabs(cos(amin)) + r * sin(amin), hh * fabs(cos(amax)) + r * sin(amax));
+    return amin < 0.5 * PROX_PI && amax > 0.5 * PROX_PI ? fmin(f, r) : f;
+}
+
+static double cone_at(const prox_cone *k, double a)
+{
+    double t = cos(a), p = sin(a);
+    return fmax(-k->hh * t + k->r1 * p, k->hh * t + k->r2 * p);
+}
+
+/* The exact minimum (a lower bound for ECYL and the polytopes) of hc over the cap around unit c. */
+static double body_cap(const prox_body *b, prox_vec3 c, double rho)
+{
+    double amin, amax;
+    switch (b->kind) {
+    case PROX_BODY_SPH: return b->r;
+    case PROX_BODY_ELL: {
+        const prox_ellb *k = &b->x.ell;
+        cap_angles(k->w, c, rho, &amin, &amax);
+        double e = k->a * k->a - k->b * k->b, t2;
+        if (e >= 0.0) t2 = amin <= 0.5 * PROX_PI && amax >= 0.5 * PROX_PI ? 0.0 : fmin(cos(amin) * cos(amin), cos(amax) * cos(amax));
+        else t2 = fmax(cos(amin) * cos(amin), cos(amax) * cos(amax));
+        return sqrt(fmax(0.0, k->b * k->b + e * t2));
+    }
+    case PROX_BODY_CYL:
+        cap_angles(b->cyl.w, c, rho, &amin, &amax);
+        return lateral_min(b->cyl.hh, b->cyl.r, amin, amax);
+    case PROX_BODY_ECYL:
+        cap_angles(b->x.ecyl.w, c, rho, &amin, &amax);
+        return lateral_min(b->x.ecyl.hh, fmin(b->x.ecyl.a1, b->x.ecyl.a2), amin, amax);
+    case PROX_BODY_CONE: {
+        const prox_cone *k = &b->x.cone;
+        cap_angles(k->w, c, rho, &amin, &amax);
+        double f = fmin(cone_at(k, amin), cone_at(k, amax)), as = atan2(2.0 * k->hh, k->r1 - k->r2);
+        return as > amin && as < amax ? fmin(f, cone_at(k, as)) : f;
+    }
+    case PROX_BODY_BOX: {
+        double f = 0.0;
+        for (int i = 0; i < 3; ++i) {
+            cap_angles(b->box.a[i], c, rho, &amin, &amax);
+            double m = amin <= 0.5 * PROX_PI && amax >= 0.5 * PROX_PI ? 0.0 : fmin(fabs(cos(amin)), fabs(cos(amax)));
+            f += b->box.h[i] * m;
+        }
+        return f;
+    }
+    case PROX_BODY_POLY: {
+        double f = -INFINITY;
+        for (int i = 0; i < b->x.poly.nv; ++i) {
+            prox_vec3 v = b->x.poly.v[i];
+            f = fmax(f, prox_v3_norm(v) * cos(fmin(PROX_PI, angle(v, c) + rho)));
+        }
+        return f;
+    }
+    default: return -INFINITY;
+    }
+}
+
+/* max_j a_j + b_j . x (2D) over the nj planes. */
+static double pl_max(const double *a, const v2 *b, int nj, v2 x)
+{
+    double m = -INFINITY;
+    for (int j = 0; j < nj; ++j) m = fmax(m, a[j] + v2_dot(b[j], x));
+    return m;
+}
+
+/* Exact minimum over the disk |x| <= r of the convex piecewise-linear M(x) = max_j a_j + b_j . x: at a
+ * vertex of the arrangement inside the disk, at a single plane's lowest point on the circle, or where
+ * two planes cross on the circle. */
+static double pl_disk_min(const double *a, const v2 *b, int nj, double r)
+{
+    double m = INFINITY;
+    for (int j = 0; j < nj; ++j) {
+        double bn = v2_norm(b[j]);
+        v2 x = {0, 0};
+        if (bn > 0.0) x.x = -b[j].x * r / bn, x.y = -b[j].y * r / bn;
+        m = fmin(m, pl_max(a, b, nj, x));
+        for (int k = j + 1; k < nj; ++k) {
+            v2 e = v2_sub(b[j], b[k]);
+            double ee = v2_dot(e, e), al = a[j] - a[k];
+            if (!(ee > 0.0)) continue;
+            v2 x0 = {-al * e.x / ee, -al * e.y / ee};
+            double h2 = r * r - v2_dot(x0, x0);
+            if (h2 >= 0.0) {
+                double h = sqrt(h2 / ee);
+                v2 xp = {x0.x - h * e.y, x0.y + h * e.x}, xm = {x0.x + h * e.y, x0.y - h * e.x};
+                m = fmin(m, fmin(pl_max(a, b, nj, xp), pl_max(a, b, nj, xm)));
+            }
+            for (int l = k + 1; l < nj; ++l) {
+                v2 f = v2_sub(b[j], b[l]);
+                double det = v2_cross(e, f), rl = a[l] - a[j], rk = a[k] - a[j];
+                if (!(fabs(det) > 0.0)) continue;
+                v2 x3 = {(rk * f.y - rl * e.y) / det, (e.x * rl - f.x * rk) / det};
+                if (v2_dot(x3, x3) <= r * r) m = fmin(m, pl_max(a, b, nj, x3));
+            }
+        }
+    }
+    return m;
+}
+
+/* A lower bound on phi over the cap of radius rho around unit c, from points g_j of P (support
+ * points: h_P(D) >= g_j . D for every D): with D = (c + x) / |c + x|, |x| <= tan rho, x across c,
+ * phi(D) >= M(x) / |c + x| for M(x) = max_j g_j . (c + x), so the bound is min M over the disk times
+ * cos rho (when positive). The better of that and the sum of each term's own minimum over the cap. */
+static double cap_bound(const cvx *s, prox_vec3 c, const prox_vec3 *d, const prox_vec3 *g, int ng, double rho)
+{
+    /* a sphere is its centre plus a ball: P = P' + ball(rb) and h_P = h_P' + rb on the unit sphere,
+     * exactly; only h_P' is bounded by its planes (which would lose rb rho^2 / 2 on the ball) */
+    double rb = (s->a.kind == PROX_BODY_SPH ? s->a.r : 0.0) + (s->b.kind == PROX_BODY_SPH ? s->b.r : 0.0);
+    prox_vec3 t1 = prox_v3_any_perp(c), t2 = prox_v3_cross(c, t1);
+    double a[8];
+    v2 b[8];
+    for (int j = 0; j < ng; ++j) {
+        prox_vec3 gj = prox_v3_mad(g[j], -rb, d[j]);
+        a[j] = prox_v3_dot(gj, c), b[j].x = prox_v3_dot(gj, t1), b[j].y = prox_v3_dot(gj, t2);
+    }
+    double comb = pl_disk_min(a, b, ng, tan(fmin(rho, 1.5)));
+    comb = (comb > 0.0 ? comb * cos(rho) : comb) + rb;
+    if (rho >= 1.5) comb = -INFINITY;
+    double dn = prox_v3_norm(s->delta), dl = dn > 0.0 ? -dn * cos(fmax(0.0, angle(c, s->delta) - rho)) : 0.0;
+    double sep = body_cap(&s->a, c, rho) + body_cap(&s->b, prox_v3_neg(c), rho) + dl;
+    return fmax(comb, sep) - PROX_TOL_PHI_ROUND * s->S;
+}
+
+typedef struct cvx_cover {
+    double tol, lb;
+    long cells;
+    int incomplete;
+    prox_vec3 bd, gb; /* the best direction and its support point of P */
+} cvx_cover;
+
+/* One geodesic triangle q[] (support points of P gq[]) of the cover: pruned when its cap's bound is
+ * within tol of the best depth, else split into four (normalised edge midpoints: the children tile
+ * it). A centre better than the best starts a local search there. */
+static void cover_tri(cvx *s, cvx_cover *cv, const prox_vec3 *q, const prox_vec3 *gq, int depth)
+{
+    ++cv->cells;
+    prox_vec3 c = unit(prox_v3_add(prox_v3_add(q[0], q[1]), q[2]));
+    double rho = fmax(angle(c, q[0]), fmax(angle(c, q[1]), angle(c, q[2]))) * (1.0 + 1e-12) + 4.0 * DBL_EPSILON;
+    double f = phi_eval(s, c), best0 = s->best_phi;
+    record(s, c, f);
+    if (f < best0 - cv->tol) {
+        cell_newton(s, c);
+        kinks_local(s, s->best_d, CVX_LOCAL);
+    }
+    if (!(prox_v3_dot(cv->bd, s->best_d) == 1.0)) cv->bd = s->best_d, cv->gb = phi_grad(s, s->best_d);
+    prox_vec3 g[5] = {phi_grad(s, c), gq[0], gq[1], gq[2], cv->gb}, d[5] = {c, q[0], q[1], q[2], cv->bd};
+    double lb = cap_bound(s, c, d, g, 5, rho);
+    if (lb >= s->best_phi - cv->tol) { cv->lb = fmin(cv->lb, lb); return; }
+    if (depth >= CVX_BB_DEPTH || cv->cells >= CVX_BB_BUDGET) {
+        cv->lb = fmin(cv->lb, lb);
+        cv->incomplete = 1;
+        return;
+    }
+    prox_vec3 m[3] = {unit(prox_v3_add(q[0], q[1])), unit(prox_v3_add(q[1], q[2])), unit(prox_v3_add(q[2], q[0]))};
+    prox_vec3 gm[3] = {phi_grad(s, m[0]), phi_grad(s, m[1]), phi_grad(s, m[2])};
+    prox_vec3 t0[3] = {q[0], m[0], m[2]}, g0[3] = {gq[0], gm[0], gm[2]};
+    prox_vec3 t1[3] = {m[0], q[1], m[1]}, g1[3] = {gm[0], gq[1], gm[1]};
+    prox_vec3 t2[3] = {m[2], m[1], q[2]}, g2[3] = {gm[2], gm[1], gq[2]};
+    cover_tri(s, cv, t0, g0, depth + 1);
+    cover_tri(s, cv, t1, g1, depth + 1);
+    cover_tri(s, cv, t2, g2, depth + 1);
+    cover_tri(s, cv, m, gm, depth + 1);
+}
+
+/* Starts of the depth search: the centre line, the icosahedron's vertices and the centres of its
+ * faces split once, every kink (points, crossings, circles searched whole); then Newton and the
+ * local kinks from the best distinct starts. Returns 1 when a separating direction turned up. */
+static int depth_starts(cvx *s)
+{
+    if (prox_v3_norm2(s->delta) > 0.0) consider(s, s->delta), consider(s, prox_v3_neg(s->delta));
+    for (int i = 0; i < 12; ++i) consider(s, ico_vertex(i));
+    for (int f = 0; f < 20; ++f) {
+        prox_vec3 q0 = ico_vertex(cvx_ico_f[f][0]), q1 = ico_vertex(cvx_ico_f[f][1]), q2 = ico_vertex(cvx_ico_f[f][2]);
+        prox_vec3 m01 = unit(prox_v3_add(q0, q1)), m12 = unit(prox_v3_add(q1, q2)), m20 = unit(prox_v3_add(q2, q0));
+        consider(s, prox_v3_add(prox_v3_add(q0, m01), m20));
+        consider(s, prox_v3_add(prox_v3_add(m01, q1), m12));
+        consider(s, prox_v3_add(prox_v3_add(m20, m12), q2));
+        consider(s, prox_v3_add(prox_v3_add(m01, m12), m20));
+    }
+    kinks_global(s);
+    if (s->best_phi < 0.0) return 1;
+    prox_vec3 st[CVX_TOPK];
+    int ns = s->ntop;
+    for (int i = 0; i < ns; ++i) st[i] = s->td[i];
+    for (int i = 0; i < ns; ++i) {
+        cell_newton(s, st[i]);
+        kinks_local(s, s->best_d, CVX_LOCAL);
+    }
+    cell_newton(s, s->best_d);
+    return s->best_phi < 0.0;
+}
+
+/* The cover of the sphere: a proven lower bound on the depth (convex.h). */
+static void depth_cover(cvx *s, prox_convex_info *info)
+{
+    cvx_cover cv = {PROX_TOL_DEPTH_CERT * s->S, INFINITY, 0, 0, {0, 0, 0}, {0, 0, 0}};
+    atomic_fetch_add(&cvx_global_runs, 1);
+    info->global = 1;
+    prox_vec3 v[12], gv[12];
+    for (int i = 0; i < 12; ++i) v[i] = ico_vertex(i), gv[i] = phi_grad(s, v[i]);
+    cv.bd = s->best_d, cv.gb = phi_grad(s, s->best_d);
+    for (int f = 0; f < 20; ++f) {
+        prox_vec3 q[3], gq[3];
+        for (int k = 0; k < 3; ++k) q[k] = v[cvx_ico_f[f][k]], gq[k] = gv[cvx_ico_f[f][k]];
+        cover_tri(s, &cv, q, gq, 0);
+    }
+    info->cells = cv.cells;
+    info->lower = fmin(cv.lb, s->best_phi);
+    info->upper = s->best_phi;
+    info->certified = !cv.incomplete && s->best_phi - info->lower <= cv.tol;
+}
+
+/* ---- entry points ------------------------------------------------------------------------------ */
+
+/* The pair relative to A's reference point (exact by Sterbenz when the two are close compared with
+ * their distance to the origin) and at unit scale (a power of two: exact); *o, *f receive both. */
+static void pair_make(const prox_body *a, const prox_body *b, cvx *s, prox_vec3 *o, double *f)
+{
+    prox_body ra = *a, rb = *b;
+    *o = a->c;
+    ra.c = prox_v3(0, 0, 0);
+    rb.c = prox_v3_sub(b->c, a->c);
+    double S = fmax(prox_v3_norm(rb.c), fmax(a->size, b->size));
+    *f = prox_unit_scale(S);
+    s->a = prox_body_scaled(&ra, *f);
+    s->b = prox_body_scaled(&rb, *f);
+    s->delta = prox_v3_sub(s->b.c, s->a.c);
+    s->S = S * *f;
+    s->best_phi = INFINITY;
+    s->best_d = prox_v3(0, 0, 1);
+    s->nk = s->ntop = 0;
+    body_kinks(s, &s->a, 1.0);
+    body_kinks(s, &s->b, -1.0);
+}
+
+static prox_vec3 to_abs(prox_vec3 o, double f, prox_vec3 p) { return prox_v3_mad(o, 1.0 / f, p); }
+
+/* The depth answer: among the candidate normals whose depth is within PROX_TOL_TOUCH S of the best,
+ * the one whose witnesses meet p2 - p1 = sd n best. */
+static void finish_overlap(cvx *s, prox_signed_result *r)
+{
+    prox_vec3 c[24];
+    int nc = answer_candidates(s, c, 24);
+    double best = INFINITY, lim = s->best_phi + PROX_TOL_TOUCH * s->S;
+    r->sd = -s->best_phi, r->normal = s->best_d;
+    for (int k = 0; k < nc; ++k) {
+        double f = phi_eval(s, c[k]);
+        if (!(f <= lim)) continue;
+        prox_vec3 x = {0, 0, 0}, y = x;
+        double e = witness_overlap(s, c[k], -f, &x, &y);
+        if (e < best) best = e, r->sd = -f, r->normal = c[k], r->p1 = x, r->p2 = y;
+    }
+}
+
+/* The signed answer of the scaled pair (unit-scale units). */
+static prox_signed_result signed_scaled(cvx *s, prox_convex_info *info)
+{
+    prox_signed_result r = {0};
+    r.status = PROX_OK;
+    gjk_out g = gjk_run(s);
+    if (!(s->best_phi < 0.0) && g.verdict != 0) depth_starts(s); /* a stalled GJK: look wider */
+    if (s->best_phi < 0.0 && g.verdict != 0) {
+        cvx_answer a = solve_disjoint(s, &g, info);
+        r.sd = a.upper, r.normal = a.n, r.p1 = a.p1, r.p2 = a.p2;
+        info->lower = a.lower, info->upper = a.upper;
+        return r;
+    }
+    info->intersect = 1;
+    if (g.verdict == 0 && depth_starts(s)) { /* rounding made GJK enclose a touching pair */
+        cvx_answer a = solve_disjoint(s, &g, info);
+        r.sd = a.upper, r.normal = a.n, r.p1 = a.p1, r.p2 = a.p2;
+        info->intersect = 0, info->lower = a.lower, info->upper = a.upper;
+        return r;
+    }
+    depth_cover(s, info);
+    finish_overlap(s, &r);
+    return r;
+}
+
+prox_signed_result prox_convex_signed_ex(const prox_body *a, const prox_body *b, prox_convex_info *info)
+{
+    prox_convex_info tmp;
+    if (!info) info = &tmp;
+    *info = (prox_convex_info){0};
+    cvx s;
+    prox_vec3 o;
+    double f;
+    pair_make(a, b, &s, &o, &f);
+    prox_signed_result r = signed_scaled(&s, info);
+    r.sd /= f;
+    r.p1 = to_abs(o, f, r.p1);
+    r.p2 = to_abs(o, f, r.p2);
+    info->lower /= f;
+    info->upper /= f;
+    return r;
+}
+
+prox_signed_result prox_convex_signed(const prox_body *a, const prox_body *b) { return prox_convex_signed_ex(a, b, NULL); }
+
+/* Overlap answer of the distance query: a common point, certified when it lies in both solids within
+ * the touching band. */
+static double outside2(const cvx *s, prox_vec3 x)
+{
+    return fmax(prox_v3_dist(x, prox_body_closest(&s->a, x)), prox_v3_dist(x, prox_body_closest(&s->b, x)));
+}
+
+/* A touching pair's common point: from the witnesses of the least overlap (p1 on A's boundary, p2 on
+ * B's, p2 - p1 = -depth n), whose middle is within depth / 2 of both solids. */
+static prox_vec3 touching_point(cvx *s)
+{
+    cell_newton(s, s->best_d);
+    kinks_local(s, s->best_d, CVX_LOCAL);
+    prox_signed_result r = {0};
+    finish_overlap(s, &r);
+    return prox_v3_scale(prox_v3_add(r.p1, r.p2), 0.5);
+}
+
+/* Alternating exact projections from y (they approach A n B), keeping the point least outside
+ * either solid; *best and *x updated. */
+static void common_polish(const cvx *s, prox_vec3 y, double tol, double *best, prox_vec3 *x)
+{
+    double prev = INFINITY;
+    for (int it = 0; it < 96; ++it) {
+        double e = outside2(s, y);
+        if (e < *best) *best = e, *x = y;
+        if (!(e > 0.01 * tol) || !(e < prev)) return; /* well inside the band, or no progress */
+        prev = e;
+        y = prox_body_closest(&s->a, prox_body_closest(&s->b, y));
+    }
+}
+
+static void common_point(cvx *s, const gjk_out *g, prox_distance_result *r, prox_convex_info *info)
+{
+    /* the simplex's pair (one point of each solid, equal to rounding of its barycentric solve) and
+     * its middle, polished; then, for a touching pair whose enclosing simplex is ill-conditioned, the
+     * middle of the least overlap's witnesses, polished */
+    double tol = PROX_TOL_TOUCH * s->S, best = INFINITY;
+    prox_vec3 cand[3] = {prox_v3_scale(prox_v3_add(g->xa, g->xb), 0.5), g->xa, g->xb}, x = cand[0];
+    for (int k = 0; k < 3 && best > tol; ++k) common_polish(s, cand[k], tol, &best, &x);
+    if (best > tol) common_polish(s, touching_point(s), tol, &best, &x);
+    r->intersect = 1;
+    r->distance = 0.0;
+    r->p1 = r->p2 = x;
+    r->certified = prox_body_contains(&s->a, x, tol) && prox_body_contains(&s->b, x, tol);
+    info->intersect = 1;
+    info->certified = r->certified;
+}
+
+prox_distance_result prox_convex_distance_ex(const prox_body *a, const prox_body *b, prox_convex_info *info)
+{
+    prox_convex_info tmp;
+    if (!info) info = &tmp;
+    *info = (prox_convex_info){0};
+    prox_distance_result r = {0};
+    r.status = PROX_OK;
+    r.method = PROX_METHOD_SUPPORT;
+    cvx s;
+    prox_vec3 o;
+    double f;
+    pair_make(a, b, &s, &o, &f);
+    gjk_out g = gjk_run(&s);
+    if (g.verdict == 2 && !(s.best_phi < 0.0) && g.vnorm > PROX_TOL_TOUCH * s.S) depth_starts(&s);
+    if (g.verdict != 0 && s.best_phi < 0.0) {
+        cvx_answer ans = solve_disjoint(&s, &g, info);
+        r.distance = ans.upper;
+        r.p1 = ans.p1, r.p2 = ans.p2;
+        r.certificate_gap = ans.lower;
+        r.certified = info->certified;
+        info->lower = ans.lower, info->upper = ans.upper;
+    } else common_point(&s, &g, &r, info);
+    r.distance /= f;
+    r.certificate_gap /= f;
+    r.p1 = to_abs(o, f, r.p1);
+    r.p2 = to_abs(o, f, r.p2);
+    info->lower /= f;
+    info->upper /= f;
+    return r;
+}
+
+prox_distance_result prox_convex_distance(const prox_body *a, const prox_body *b) { return prox_convex_distance_ex(a, b, NULL); }

@@ -1,0 +1,163 @@
+/* The ridge D.w = 0 of one cylinder in the depth of two cylinders, solved in the plane of the ridge
+ * (an accelerator of rcc_depth.c's ridges; the derivation is below).
+ *
+ * On the ridge of cylinder k (axis w, radius r) phi(D) = hc_k(D) + hc_o(D) - D.Delta = r + h_Q(D)
+ * - D.delta, where Q is the shadow of the other cylinder o (centred) along w on the plane of the
+ * ridge and delta the shadow of Delta: the minimum of phi over the ridge is r minus the signed
+ * distance of the point delta to Q, a problem of the plane. The shadow of a cylinder is an ellipse
+ * swept along a segment: E + [-d, d], E the shadow of a rim disk (semi-axes a = r_o along
+ * e1 = unit(w x w_o), b = r_o |w.w_o| along e2 = w x e1) and d = hh_o (w_o.e2) e2 the shadow of the
+ * half axis. On the half circle D.d >= 0, h_Q(D) - D.delta = h_E(D) - D.(delta - d), on the other
+ * h_E(D) - D.(delta + d); their ends are D = +-e1 (both lateral lines: the point +-(w x w_o)).
+ * Inside a half the stationary directions of h_E(D) - D.p are the normals of E at the feet of the
+ * perpendiculars from p to E (the classical point-ellipse problem; Eberly, "Distance from a Point to
+ * an Ellipse, an Ellipsoid, or a Hyperellipsoid", 2013): with p = (y0, y1) in E's axes, the foot
+ * x = (a^2 y0 / (t + a^2), b^2 y1 / (t + b^2)) for each root t of
+ *     G(t) = (a y0 / (t + a^2))^2 + (b y1 / (t + b^2))^2 - 1,
+ * and the normal there is proportional to (y0 / (t + a^2), y1 / (t + b^2)). G has one root beyond
+ * -b^2 (the foot in p's quadrant), none or two in (-a^2, -b^2), where G is convex with its minimum
+ * in closed form, and one below -a^2 (the farthest point: the maximum of h_E(D) - D.p, never a
+ * minimum). Every root is bracketed and found by Newton kept in its bracket, to full precision;
+ * every direction is a candidate of the enumeration, which evaluates phi there exactly (any
+ * direction is an upper bound), so the candidates hold every stationary point of phi on the ridge:
+ * two rims' quartics replaced by a few safeguarded Newton solves without a trigonometric call. */
+#include "sup_engine.h"
+
+#include "core/tol.h"
+
+#include <float.h>
+
+/* G of the outer branch (u = t + b^2 > 0) or the middle one (v = t + a^2 in (0, c), u = v - c) as
+ * one form: G(x) = (A / (x + p))^2 + (B / (x + q))^2 - 1 with its derivative. */
+static double rs_g(double A, double B, double p, double q, double x, double *dg)
+{
+    double f0 = A / (x + p), f1 = B / (x + q);
+    *dg = -2.0 * (f0 * f0 / (x + p) + f1 * f1 / (x + q));
+    return f0 * f0 + f1 * f1 - 1.0;
+}
+
+/* The root of G in the bracket (lo, hi) where G changes sign once (G(lo) has the sign slo), from
+ * x: Newton's steps kept inside the bracket, bisection otherwise (Press et al., rtsafe), to full
+ * precision. G is convex on each branch, so from a start on its positive side Newton approaches
+ * the root monotonically and quadratically once near. */
+static double rs_root(double A, double B, double p, double q, double lo, double hi, double slo, double x)
+{
+    for (int it = 0; it < 40; ++it) {
+        double dg, g = rs_g(A, B, p, q, x, &dg);
+        if (g == 0.0) return x;
+        if ((g > 0.0) == (slo > 0.0)) lo = x; else hi = x;
+        double xn = x - g / dg;
+        if (!(xn > lo && xn < hi)) xn = 0.5 * (lo + hi); /* Newton left the bracket: bisect */
+        if (fabs(xn - x) <= 4.0 * DBL_EPSILON * fabs(x) || !(xn > lo && xn < hi)) return xn;
+        x = xn;
+    }
+    /* not converged in 40 steps (a slow approach down a steep pole): bisection to full precision */
+    for (int it = 0; it < 200; ++it) {
+        double m = 0.5 * (lo + hi), dg;
+        if (!(m > lo && m < hi)) break;
+        if ((rs_g(A, B, p, q, m, &dg) > 0.0) == (slo > 0.0)) lo = m; else hi = m;
+    }
+    return 0.5 * (lo + hi);
+}
+
+/* The root u > 0 of the outer branch (A, B >= 0, B > 0): G falls from +inf to -1 on (0, inf);
+ * Eberly's bracket [B, sqrt(A^2 + B^2)]. */
+static double rs_root_outer(double A, double B, double c)
+{
+    double hi = sqrt(A * A + B * B); /* G(hi) <= 0; from there one Newton step lands left of the root */
+    return rs_root(A, B, c, 0.0, B, hi, 1.0, hi);
+}
+
+/* G on the middle branch at v (u = v - c < 0). */
+static double rs_mid(double A, double B, double c, double v)
+{
+    double dg;
+    return rs_g(A, B, 0.0, -c, v, &dg);
+}
+
+/* A root of the middle branch between v0 (a pole: G = +inf) and v1 (G's minimum, G < 0), started
+ * on the positive side: a root has A / v <= 1 (left) or B / (c - v) <= 1 (right), and G > 0 at
+ * v = A (left of the left root) and at v = c - B (right of the right one). */
+static double rs_root_mid(double A, double B, double c, double v0, double v1)
+{
+    if (v0 < v1) return rs_root(A, B, 0.0, -c, v0, v1, 1.0, A < v1 ? A : 0.5 * v1);
+    return rs_root(A, B, 0.0, -c, v1, v0, -1.0, c - B > v1 ? c - B : 0.5 * (v1 + c));
+}
+
+/* Adds the direction of E's normal (n0, n1) in the plane frame (e1, e2) to out (3D, not unit). */
+static void rs_push(prox_vec3 *out, int *n, int max, prox_vec3 e1, prox_vec3 e2, double n0, double n1)
+{
+    if (*n >= max || !isfinite(n0) || !isfinite(n1) || (n0 == 0.0 && n1 == 0.0)) return;
+    out[(*n)++] = prox_v3_add(prox_v3_scale(e1, n0), prox_v3_scale(e2, n1));
+}
+
+/* The normals at the feet from p = (y0, y1) to the ellipse of semi-axes a >= b > 0 (axes e1, e2),
+ * except the farthest foot; 0, or -1 when p is E's centre (every direction is stationary for a
+ * circle; the caller then takes the general path). */
+int sup_ellipse_feet(double a, double b, double y0, double y1, prox_vec3 e1, prox_vec3 e2, prox_vec3 *out, int *n,
+                     int max)
+{
+    double s0 = y0 < 0.0 ? -1.0 : 1.0, s1 = y1 < 0.0 ? -1.0 : 1.0, z0 = fabs(y0), z1 = fabs(y1);
+    double c = (a - b) * (a + b), A = a * z0, B = b * z1;
+    if (z0 == 0.0 && z1 == 0.0) { /* the centre: the four vertices of an ellipse, any of a circle */
+        if (!(c > 0.0)) return -1;
+        rs_push(out, n, max, e1, e2, 0.0, 1.0);
+        rs_push(out, n, max, e1, e2, 1.0, 0.0);
+        return 0;
+    }
+    /* the foot in p's quadrant: t > -b^2 */
+    if (z1 > 0.0) {
+        double u = rs_root_outer(A, B, c);
+        rs_push(out, n, max, e1, e2, s0 * z0 / (u + c), s1 * z1 / u);
+    } else { /* p on the major axis: the near vertex (t = a z0 - a^2), and when that lies below
+              * -b^2 (a z0 < c) the two feet of the limit t -> -b^2 */
+        rs_push(out, n, max, e1, e2, s0, 0.0);
+        if (A < c) {
+            double x0 = a * a * z0 / c, r = 1.0 - (x0 / a) * (x0 / a); /* foot (x0, +-b sqrt(r)) */
+            double x1 = b * sqrt(fmax(0.0, r));
+            rs_push(out, n, max, e1, e2, s0 * x0 / (a * a), x1 / (b * b));
+            rs_push(out, n, max, e1, e2, s0 * x0 / (a * a), -x1 / (b * b));
+        }
+    }
+    if (!(c > 0.0)) return 0;
+    /* the middle branch t in (-a^2, -b^2), v = t + a^2 in (0, c) */
+    if (z0 > 0.0 && z1 > 0.0) {
+        double k = cbrt((A / B) * (A / B)), vm = c / (1.0 + 1.0 / k); /* G' = 0: v / -u = (A / B)^(2/3) */
+        rs_push(out, n, max, e1, e2, s0 * z0 / vm, s1 * z1 / (vm - c));
+        if (rs_mid(A, B, c, vm) < 0.0) {
+            double v1 = rs_root_mid(A, B, c, 0.0, vm), v2 = rs_root_mid(A, B, c, c, vm);
+            rs_push(out, n, max, e1, e2, s0 * z0 / v1, s1 * z1 / (v1 - c));
+            rs_push(out, n, max, e1, e2, s0 * z0 / v2, s1 * z1 / (v2 - c));
+        }
+    } else if (z0 == 0.0) { /* z0 = 0: vertices (0, +-b), and the feet at t -> -a^2 when |x1| < b */
+        rs_push(out, n, max, e1, e2, 0.0, -s1);
+        double x1 = b * b * z1 / c, r = 1.0 - (x1 / b) * (x1 / b);
+        if (r > 0.0) {
+            double x0 = a * sqrt(r);
+            rs_push(out, n, max, e1, e2, x0 / (a * a), -s1 * x1 / (b * b));
+            rs_push(out, n, max, e1, e2, -x0 / (a * a), -s1 * x1 / (b * b));
+        }
+    }
+    return 0;
+}
+
+int sup_ridge_shadow(const prox_body *lat, const prox_body *oth, prox_vec3 delta, prox_vec3 *out, int max)
+{
+    prox_vec3 w = lat->cyl.w, wo = oth->cyl.w;
+    double cw = fabs(prox_v3_dot(w, wo));
+    prox_vec3 x = prox_v3_cross(w, wo);
+    double xn = prox_v3_norm(x);
+    double a = oth->cyl.r, b = oth->cyl.r * cw;
+    /* the other axis nearly in the ridge plane: E is a needle (its tips curve at b^2 / a), the
+     * general path (rims' quartics) decides */
+    if (!(b > PROX_TOL_RIDGE_THIN * a)) return -1;
+    prox_vec3 e1 = xn > PROX_TOL_PARALLEL ? prox_v3_scale(x, 1.0 / xn) : prox_v3_any_perp(w);
+    prox_vec3 e2 = prox_v3_cross(w, e1);
+    if (!(xn > PROX_TOL_PARALLEL)) b = a; /* parallel axes: E is the disk's own circle */
+    double d2 = oth->cyl.hh * prox_v3_dot(wo, e2), p0 = prox_v3_dot(delta, e1), p1 = prox_v3_dot(delta, e2);
+    int n = 0;
+    rs_push(out, &n, max, e1, e2, 1.0, 0.0); /* the ends of the halves: both lateral lines */
+    for (int h = -1; h <= 1; h += 2)
+        if (sup_ellipse_feet(a, b, p0, p1 + h * d2, e1, e2, out, &n, max) < 0) return -1;
+    return n;
+}
