@@ -315,7 +315,7 @@ static void mix_register(const char *fam, const mix_method *m, const mix_set *s,
 
 static int mix_build(const bench_opts *o, prox_shape_kind ka, prox_shape_kind kb, uint64_t seed, mix_set *s)
 {
-    size_t n = o->quick ? 4000 : 20000;
+    size_t n = o->quick ? 2000 : 20000;
     bench_rng r = bench_rng_seed(seed);
     s->n = n;
     s->a = bench_xmalloc(n * sizeof *s->a), s->b = bench_xmalloc(n * sizeof *s->b);

@@ -83,7 +83,7 @@ static void test_check_example_json(void **state)
     (void)state;
     if (!have_cli()) skip();
     char *out;
-    assert_int_equal(run_cli("check '" EXAMPLE "' --json", &out), 1);
+    assert_int_equal(run_cli("check '" EXAMPLE "' --bodies --json", &out), 1);
     assert_int_equal(count(out, "\"surface\":"), 11);
     assert_non_null(strstr(out, "{\"surface\": 50, \"type\": \"RCC\", \"line\": 27}"));
     assert_int_equal(count(out, "\"relation\": \"crossing\""), 1);
@@ -127,7 +127,7 @@ static void test_check_clearance_and_all(void **state)
     assert_int_equal(run_cli("check '" EXAMPLE "' --json --all", &out), 1);
     assert_int_equal(count(out, "\"relation\""), 55); /* 11 bodies: every pair */
     free(out);
-    assert_int_equal(run_cli("check '" EXAMPLE "'", &out), 1); /* the table */
+    assert_int_equal(run_cli("check '" EXAMPLE "' --bodies", &out), 1); /* the table */
     assert_non_null(strstr(out, "crossing"));
     assert_non_null(strstr(out, "1 crossing pair\n"));
     assert_non_null(strstr(out, "unsupported: line 31: 70 PZ"));
@@ -139,14 +139,14 @@ static void test_check_clean_deck(void **state)
     (void)state;
     if (!have_cli()) skip();
     char path[64], args[128], *out;
-    temp_deck("two spheres, \"quoted\" title\n1 0 -1\n\n1 SO 1\n2 SX 2 1\n3 SX 2.5 1e-1\n\nnps 1\n", path);
-    snprintf(args, sizeof args, "check %s --json", path);
+    temp_deck("two spheres, \"quoted\" title\n1 0 -1 -2 -3\n\n1 SO 1\n2 SX 2 1\n3 SX 2.5 1e-1\n\nnps 1\n", path);
+    snprintf(args, sizeof args, "check %s --bodies --json", path);
     assert_int_equal(run_cli(args, &out), 0);
     assert_non_null(strstr(out, "\"title\": \"two spheres, \\\"quoted\\\" title\""));
     assert_int_equal(count(out, "\"relation\": \"touching\""), 1); /* 1 and 2 touch at x = 1 */
     assert_non_null(strstr(out, "{\"a\": 2, \"b\": 3, \"relation\": \"nested\""));
     free(out);
-    snprintf(args, sizeof args, "check %s", path);
+    snprintf(args, sizeof args, "check %s --bodies", path);
     assert_int_equal(run_cli(args, &out), 0);
     assert_non_null(strstr(out, "0 crossing pairs"));
     free(out);

@@ -515,7 +515,11 @@ static void check_new_pair(const prox_shape *sa, const prox_shape *sb, fam_stats
     prox_distance_result d = prox_convex_distance(&a, &b);
     assert_int_equal(d.status, PROX_OK);
     ld dout = fmaxl(ref_out(&ra, L(d.p1)), ref_out(&rb, L(d.p2)));
-    if (d.intersect) assert_true(s.sd <= band && dout <= band && prox_v3_dist(d.p1, d.p2) == 0.0);
+    if (d.intersect) {
+        if (!(s.sd <= band && dout <= band))
+            print_error("kinds %d %d: common point outside/S %.3Lg, signed sd/S %.3g\n", sa->kind, sb->kind, dout / S, s.sd / S);
+        assert_true(s.sd <= band && dout <= band && prox_v3_dist(d.p1, d.p2) == 0.0);
+    }
     else {
         assert_true(fabs(d.distance - fmax(s.sd, 0.0)) <= band && dout <= band);
         assert_true(fabs(prox_v3_dist(d.p1, d.p2) - d.distance) <= band && d.certificate_gap <= d.distance + band);

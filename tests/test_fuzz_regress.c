@@ -166,6 +166,82 @@ static void test_fuzz_long_needle_closed_form(void **state)
     }
 }
 
+/* fuzz/crashes/queries-ell-subnormal-rho-*: a sphere whose centre lies a subnormal distance (6.6e-316)
+ * off an ellipsoid's axis. The radial unit vector was the offset times 1 / rho, which overflows for a
+ * subnormal rho: the closest point came out (NaN, inf, NaN) under PROX_OK. The answer must be finite
+ * and equal (to 1e-12 S) to the same pair with the centre exactly on the axis. */
+static void test_fuzz_ell_subnormal_rho(void **state)
+{
+    (void)state;
+    prox_shape e = prox_shape_from_ell((prox_ell){prox_v3(0.5, 0, 0), prox_v3(2, 0, 0), 1.9365});
+    const double off[] = {6.6e-316, 0.0};
+    double d[2];
+    for (int k = 0; k < 2; ++k) {
+        prox_shape s = prox_shape_from_sph((prox_sph){prox_v3(2.6, off[k], 0), 1.0});
+        prox_distance_result r = prox_shape_distance(&e, &s), t = prox_shape_distance(&s, &e);
+        prox_signed_result g = prox_shape_signed_distance(&e, &s);
+        assert_int_equal(r.status, PROX_OK);
+        assert_int_equal(t.status, PROX_OK);
+        assert_int_equal(g.status, PROX_OK);
+        assert_true(prox_v3_isfinite(r.p1) && prox_v3_isfinite(r.p2));
+        assert_true(prox_v3_isfinite(t.p1) && prox_v3_isfinite(t.p2));
+        assert_true(prox_v3_isfinite(g.p1) && prox_v3_isfinite(g.p2) && prox_v3_isfinite(g.normal));
+        d[k] = g.sd;
+    }
+    assert_near(d[0], d[1], 1e-12 * 4.0);
+    assert_near(d[1], -(2.5 - (2.6 - 1.0)), 1e-12 * 4.0); /* on the axis: the tip at x = 2.5 is 0.9 deep */
+}
+
+/* fuzz/crashes/pairs-sph-rcc-subnormal-normal-*: a sphere centre a subnormal distance (1e-317) below
+ * a cylinder's base. The outward normal x - q has a subnormal length, and 1 / |x - q| overflowed: the
+ * normal and a witness came out (NaN, NaN, inf) under PROX_OK. The normal must be the unit -z. */
+static void test_fuzz_sph_rcc_subnormal_normal(void **state)
+{
+    (void)state;
+    prox_shape s = prox_shape_from_sph((prox_sph){prox_v3(0, 0, 0), 1.0});
+    prox_shape c = prox_shape_from_rcc((prox_rcc){prox_v3(0, 0, 1e-317), prox_v3(0, 0, 1), 0.1});
+    prox_signed_result r = prox_shape_signed_distance(&s, &c);
+    assert_int_equal(r.status, PROX_OK);
+    assert_true(prox_v3_isfinite(r.normal) && prox_v3_isfinite(r.p1) && prox_v3_isfinite(r.p2));
+    assert_near(r.sd, -1.0, 1e-15);
+    assert_near(prox_v3_norm(r.normal), 1.0, 1e-15);
+    assert_near(fabs(r.normal.z), 1.0, 1e-15);
+}
+
+/* fuzz/crashes/pairs-needle-wed-*, pairs-flat-rhp-rcc-*: a wedge whose triangle sides were 1e-19 of its
+ * height and hexagonal plates 1e-23 to 1e-110 as thick as wide gave order-dependent, wrong distances.
+ * Such bodies lie outside the supported aspect ratio (PROX_MAX_ASPECT, shapes.h) and are named
+ * PROX_EINVAL_RANGE by the validators, every query included; bodies just inside it are accepted. */
+static void test_fuzz_degenerate_aspect(void **state)
+{
+    (void)state;
+    const double thin[] = {1e-19, 1e-13, 1e-11};
+    const prox_status want[] = {PROX_EINVAL_RANGE, PROX_EINVAL_RANGE, PROX_OK};
+    prox_shape box = prox_shape_from_box((prox_box){prox_v3(2, 0, 0), {prox_v3(1, 0, 0), prox_v3(0, 1, 0), prox_v3(0, 0, 1)}});
+    for (int k = 0; k < 3; ++k) {
+        prox_wed w = {prox_v3(0, 0, 0), prox_v3(thin[k], 0, 0), prox_v3(0, thin[k], 0), prox_v3(0, 0, 1)};
+        assert_int_equal(prox_wed_validate(&w), want[k]);
+        prox_shape ws = prox_shape_from_wed(w);
+        assert_int_equal(prox_shape_distance(&box, &ws).status, want[k]);
+        prox_rhp h;
+        prox_status st = prox_rhp_regular(prox_v3(0, 0, 0), prox_v3(0, 0, thin[k]), prox_v3(1, 0, 0), &h);
+        assert_int_equal(st, want[k]);
+        prox_trc t = {prox_v3(0, 0, 0), prox_v3(0, 0, 1), thin[k], 0.0};
+        assert_int_equal(prox_trc_validate(&t), want[k]);
+        prox_ell e = {prox_v3(0, 0, 0), prox_v3(0, 0, 1), thin[k]};
+        assert_int_equal(prox_ell_validate(&e), want[k]);
+        prox_rec r = {prox_v3(0, 0, 0), prox_v3(0, 0, 1), prox_v3(1, 0, 0), prox_v3(0, thin[k], 0)};
+        assert_int_equal(prox_rec_validate(&r), want[k]);
+    }
+    /* a just-inside wedge answers the same both ways */
+    prox_wed w = {prox_v3(0, 0, 0), prox_v3(1e-11, 0, 0), prox_v3(0, 1e-11, 0), prox_v3(0, 0, 1)};
+    prox_shape ws = prox_shape_from_wed(w);
+    prox_distance_result ab = prox_shape_distance(&box, &ws), ba = prox_shape_distance(&ws, &box);
+    assert_int_equal(ab.status, PROX_OK);
+    assert_near(ab.distance, 2.0 - 1e-11, 1e-12 * 3);
+    assert_near(ba.distance, ab.distance, 1e-12 * 3);
+}
+
 int main(void)
 {
     test_init();
@@ -177,6 +253,9 @@ int main(void)
         cmocka_unit_test(test_fuzz_rim_rim_overflow),
         cmocka_unit_test(test_fuzz_needle_depth),
         cmocka_unit_test(test_fuzz_long_needle_closed_form),
+        cmocka_unit_test(test_fuzz_ell_subnormal_rho),
+        cmocka_unit_test(test_fuzz_sph_rcc_subnormal_normal),
+        cmocka_unit_test(test_fuzz_degenerate_aspect),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

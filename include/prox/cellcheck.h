@@ -20,8 +20,8 @@
 #include "status.h"
 #include "vec3.h"
 
-/// Default resolution as a fraction of the diagonal of the model box (the box of universe 0's
-/// bounded cells, outside cells excluded).
+/// Default resolution as a fraction of the diagonal of the model box: the box of the real world's
+/// bounded cells and of the region its outside cells surround, widened by 1 % (prox_cells_report lo, hi).
 #define PROX_CELLS_DEFAULT_RESOLUTION 1e-4
 
 /// Most cells named by one undecided entry.
@@ -75,7 +75,7 @@ typedef struct prox_cells_check_stats {
 typedef struct prox_cells_report {
     prox_status status;
     double resolution;           ///< the resolution used
-    prox_vec3 lo, hi;            ///< the model box (universe 0 region checked)
+    prox_vec3 lo, hi;            ///< the model box: the part of the real world that is checked
     prox_cells_overlap *overlaps; ///< one per universe and cell pair, sorted
     size_t noverlaps;
     prox_cells_gap *gaps;        ///< one per connected gap region, sorted

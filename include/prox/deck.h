@@ -8,7 +8,7 @@
 /// followed by a blank, or alone); `$` end-of-line comments; continuation by five leading blanks or
 /// a trailing `&`; columns 1-128 of a line (text beyond is listed as unsupported); an optional
 /// `message:` block; blank-line block delimiters; numbers with E/D exponents; the shorthands nR, nI,
-/// xM, nILOG (nJ and Fortran exponents without E are errors); READ FILE=name cards with ECHO, NOECHO,
+/// xM, nILOG (nJ is an error; a Fortran exponent without its letter, 1.5-3, is 1.5e-3); READ FILE=name cards with ECHO, NOECHO,
 /// ENCODE (followed by prox_deck_read_file only; see there; DECODE is listed as unsupported).
 /// The cell model of a deck (cells, all surface kinds, universes) is read by cells.h.
 #ifndef PROX_DECK_H

@@ -27,5 +27,6 @@
 #include "scene.h"
 #include "deck.h"
 #include "cells.h"
+#include "cellcheck.h"
 
 #endif

@@ -125,6 +125,12 @@ PROX_API const char *prox_shape_kind_name(prox_shape_kind k);
 #define PROX_MAX_COORD 1e100
 #define PROX_MIN_SIZE 1e-100
 
+/// The added macrobodies (TRC, REC, ELL, RHP/HEX, WED, ARB) also keep every dimension within a factor
+/// PROX_MAX_ASPECT of their largest (a TRC's height and larger radius; a REC's height and semi-axes; an
+/// ELL's two semi-axes; a polytope's width across each face and its diameter): a plate or a needle
+/// thinner than that gives PROX_EINVAL_RANGE. Within it the solvers keep their stated accuracy.
+#define PROX_MAX_ASPECT 1e12
+
 /// Relative tolerance for box edge orthogonality: |e_i . e_j| <= tol |e_i| |e_j|.
 #define PROX_BOX_ORTHO_TOL 1e-9
 

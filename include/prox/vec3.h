@@ -59,10 +59,15 @@ static inline double prox_hypot2(double x, double y)
 }
 /// |a - b|
 static inline double prox_v3_dist(prox_vec3 a, prox_vec3 b) { return prox_v3_norm(prox_v3_sub(a, b)); }
-/// a / |a|; the zero vector is returned unchanged.
+/// a / |a|; the zero vector is returned unchanged. A vector shorter than 2^-1000 is first scaled up by
+/// 2^600 (exact), so that 1 / |a| cannot overflow for a subnormal length.
 static inline prox_vec3 prox_v3_normalize(prox_vec3 a)
 {
     double n = prox_v3_norm(a);
+    if (n < 0x1p-1000 && n > 0.0) {
+        a = prox_v3_scale(a, 0x1p600);
+        n = prox_v3_norm(a);
+    }
     return n > 0.0 ? prox_v3_scale(a, 1.0 / n) : a;
 }
 /// Largest absolute component.

@@ -395,4 +395,10 @@ class ARB(_Shape):
         self._init([(c.reshape(-1, 24), cs, 24), (f, fs, 6)], ["corners", "faces"])
 
     corners = property(lambda self: self._rows[:, 0:24].reshape(-1, 8, 3))
-    faces = property(lambda self: self._rows[:, 24:30].astype(np.int64))
+    @property
+    def faces(self):
+        """(N, 6) int64: the face numbers, -1 for an entry that is no whole number in 0..9999 (which the
+        extension reads as no face, STATUS_EINVAL_ARB_FACE)."""
+        f = self._rows[:, 24:30]
+        whole = (f >= 0) & (f <= 9999) & (f == np.floor(np.where(np.isfinite(f), f, 0)))
+        return np.where(whole, np.where(whole, f, 0).astype(np.int64), -1)

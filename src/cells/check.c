@@ -328,8 +328,15 @@ static void window_domain(prox_ccctx *c, winfo *w)
         return;
     }
     prox_ccbox b = P->nbox[w->expr + w->nexpr - 1];
-    if (!prox_ccbox_bounded(&b)) {
+    if (!prox_ccbox_is_empty(&b) && !prox_ccbox_bounded(&b)) {
         prox_ccbox h = bounded_hull(P, w->u0, w->nu, 0);
+        if (prox_ccbox_is_empty(&h)) {
+            /* An element of a lattice of infinite pins: the window is open along the pins and so is
+             * every cell; it is not checked, and says so (never a silent clean verdict). */
+            w->dom = prox_ccbox_empty();
+            w->why = "window not bounded: neither its region nor any cell of its universe is bounded";
+            return;
+        }
         b = prox_ccbox_and(&b, &h);
     }
     if (prox_ccbox_is_empty(&b) || !prox_ccbox_bounded(&b)) {
@@ -470,6 +477,30 @@ static void bound_cells(prox_ccctx *c, prox_ccprep *P, const winfo *w, size_t nw
     }
 }
 
+/* 1 when windows a and b are the same region of the same universe: term by term the same operations
+ * on the same canonical surfaces with the same senses (P->rep, P->flip). A universe filled into many
+ * cells that its fills map onto one region (a fuel element repeated by TRCL or by a fill transform)
+ * has one window per filling cell; checking the region once proves every copy. */
+static int same_window(const prox_ccprep *P, const winfo *a, const winfo *b)
+{
+    if (a->universe != b->universe || a->nexpr != b->nexpr) return 0;
+    for (size_t k = 0; k < a->nexpr; ++k) {
+        const prox_term *x = &P->m->terms[a->expr + k], *y = &P->m->terms[b->expr + k];
+        if (x->op != y->op) return 0;
+        if (x->op == PROX_OP_LEAF &&
+            (P->rep[x->surf] != P->rep[y->surf] || x->sense * P->flip[x->surf] != y->sense * P->flip[y->surf]))
+            return 0;
+    }
+    return 1;
+}
+
+/* Marks each window equal to an earlier one (same_window) as not to be checked. */
+static void skip_repeated_windows(const prox_ccprep *P, winfo *w, size_t nw, int *skip)
+{
+    for (size_t k = 0; k < nw; ++k)
+        for (size_t j = 0; j < k && !skip[k]; ++j) skip[k] = !skip[j] && same_window(P, &w[j], &w[k]);
+}
+
 static prox_status check_run(prox_ccprep *P, const prox_cells_check_opts *o, prox_cells_report *r, double t0)
 {
     size_t nw = 0;
@@ -480,8 +511,19 @@ static prox_status check_run(prox_ccprep *P, const prox_cells_check_opts *o, pro
         free(w);
         return PROX_ENOMEM;
     }
+    int *skip = calloc(nw, sizeof *skip);
+    if (!skip) {
+        prox_ccctx_free(&c);
+        free(w);
+        return PROX_ENOMEM;
+    }
+    skip_repeated_windows(P, w, nw, skip);
     prox_ccbox model = prox_ccbox_empty();
     for (size_t k = 0; k < nw; ++k) {
+        if (skip[k]) {
+            w[k].dom = prox_ccbox_empty(), w[k].why = NULL;
+            continue;
+        }
         window_domain(&c, &w[k]);
         if (w[k].universe == 0 && !prox_ccbox_is_empty(&w[k].dom)) model = prox_ccbox_or(&model, &w[k].dom);
     }
@@ -512,6 +554,9 @@ static prox_status check_run(prox_ccprep *P, const prox_cells_check_opts *o, pro
     /* Windows that could not be boxed are undecided as a whole. */
     for (size_t k = 0; k < nw && st == PROX_OK; ++k) {
         if (!w[k].why) continue;
+        int told = 0; /* one entry per universe and reason */
+        for (size_t j = 0; j < k && !told; ++j) told = w[j].why == w[k].why && w[j].universe == w[k].universe;
+        if (told) continue;
         prox_cells_undecided *u = realloc(r->undecided, (r->nundecided + 1) * sizeof *u);
         if (!u) {
             st = PROX_ENOMEM;
@@ -523,6 +568,7 @@ static prox_status check_run(prox_ccprep *P, const prox_cells_check_opts *o, pro
                                                     .reason = w[k].why};
     }
     for (size_t i = 0; i < ntasks && outs; ++i) free(outs[i].recs);
+    free(skip);
     free(outs);
     free(tasks);
     free(w);

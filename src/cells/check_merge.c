@@ -1,8 +1,8 @@
 /* Merges the findings of the cell check's tasks into the report: one overlap per universe and cell
  * pair (volumes summed, the witness of the largest proved box), one gap per connected region of gap
- * boxes (boxes that touch, closed), one undecided entry per universe, set of cells and reason. Every
- * gap's witness is confirmed here by exact membership against every cell of its universe (overlap
- * witnesses were confirmed when found). */
+ * boxes (boxes that touch, closed), one undecided entry per universe, set of cells and reason (none
+ * for a pair already proved to overlap). Every gap's witness is confirmed here by exact membership
+ * against every cell of its universe (overlap witnesses were confirmed when found). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -165,6 +165,20 @@ static prox_status merge_gaps(const prox_ccprep *P, const prox_cctask *tasks, re
     return PROX_OK;
 }
 
+/* 1 when the report already names cells a and b of universe u as overlapping. */
+static int known_pair(const prox_cells_report *r, long u, long a, long b)
+{
+    for (size_t i = 0; i < r->noverlaps; ++i) {
+        const prox_cells_overlap *o = &r->overlaps[i];
+        if (o->universe == u && ((o->cells[0] == a && o->cells[1] == b) || (o->cells[0] == b && o->cells[1] == a)))
+            return 1;
+    }
+    return 0;
+}
+
+/* Undecided entries after the overlaps are merged: an entry for exactly a pair of cells already
+ * proved to overlap is left out (the thin rim of a found overlap, where its boundary surfaces meet,
+ * would only repeat it). */
 static prox_status merge_undecided(const prox_ccprep *P, ref *v, size_t n, prox_cells_report *r)
 {
     qsort(v, n, sizeof *v, by_cells);
@@ -182,6 +196,7 @@ static prox_status merge_undecided(const prox_ccprep *P, ref *v, size_t n, prox_
         }
         u.lo = prox_v3(hull.lo[0], hull.lo[1], hull.lo[2]);
         u.hi = prox_v3(hull.hi[0], hull.hi[1], hull.hi[2]);
+        if (u.ncells == 2 && known_pair(r, u.universe, u.cells[0], u.cells[1])) continue;
         if (push_undecided(r, &u) != PROX_OK) return PROX_ENOMEM;
     }
     return PROX_OK;

@@ -1,14 +1,15 @@
-/* One task of the cell check: a box of one window, subdivided (halving the longest edge) level by
- * level until every part is decided or the resolution is reached.
+/* One task of the cell check: a box of one window, subdivided depth first (halving the longest
+ * edge) until every part is decided or the resolution is reached.
  *
  * A box is decided when, for every assignment of signs to the surfaces crossing it (check.c), the
  * window's points are claimed by exactly one cell (clean); when two cells certainly hold all of it
- * (an overlap of the box's volume); or when no cell can hold any of it (a gap). Boxes of the
- * resolution still undecided are probed at 27 points by exact membership: a point in two cells is an
- * overlap witness, a point in none a gap witness, even below the resolution; otherwise the box is
- * undecided. A box whose only open questions are overlaps of cell pairs (or a gap) this task has
- * already proved is not refined further: it can only add to a known finding's volume. The levels are
- * processed in order, so the interior of a finding is proved before its boundary is refined. */
+ * (an overlap of the box's volume); or when no cell can hold any of it (a gap). A box with open
+ * assignments is probed at its centre by exact membership, so that a finding is known early (with
+ * the largest cube around the probe point proved to be in it). Boxes of the resolution still open
+ * are probed at 27 points: a point in two cells is an overlap witness, a point in none a gap
+ * witness, even below the resolution; what no witness explains is undecided. A box whose only open
+ * questions are findings this task already holds is refined only while it is large next to the
+ * finding, and within budgets (below): it can only add to a known finding's volume. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

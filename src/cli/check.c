@@ -241,6 +241,8 @@ static int run_check(check_run *run)
             return -1;
         }
     }
+    /* --threads N, else every processor: the broad phase and the ladder split across them */
+    prox_scene_set_threads(s, run->o->threads > 0 ? run->o->threads : 0);
     run->rep = prox_scene_pairs(s, run->o->all ? INFINITY : run->o->clearance, PROX_MODE_RELATION);
     prox_scene_destroy(s);
     if (run->rep.status != PROX_OK) return -1;
@@ -272,6 +274,22 @@ static int used_bodies(check_run *run, const prox_cell_model *cm)
     return 0;
 }
 
+/* The errors of the cell cards the body reader does not see (an undefined surface, a bad region,
+ * a bad fill): a deck that has them was not cell-checked, so they are listed after the body report
+ * (on stderr after a JSON document), each line the deck reader already reported skipped. */
+static void cell_errors(FILE *f, const prox_deck *d, const prox_cell_model *cm)
+{
+    size_t n = 0;
+    for (size_t i = 0; cm && i < cm->nerrors; ++i) {
+        int seen = 0;
+        for (size_t j = 0; j < d->nerrors && !seen; ++j) seen = d->errors[j].line == cm->errors[i].line;
+        if (seen) continue;
+        fprintf(f, "%serror: line %d: %s\n", n++ ? "" : "\n", cm->errors[i].line, cm->errors[i].text);
+    }
+    if (cm && cm->nerrors)
+        fprintf(f, "\nnot cell-checked: %zu error%s in the cell cards\n", cm->nerrors, cm->nerrors == 1 ? "" : "s");
+}
+
 /* The body-level report. */
 static int bodies_report(const check_opts *o, const prox_cell_model *cm, FILE *out, prox_status *st)
 {
@@ -287,6 +305,7 @@ static int bodies_report(const check_opts *o, const prox_cell_model *cm, FILE *o
     else {
         if (o->json) write_json(out, &run);
         else write_table(out, &run);
+        cell_errors(o->json ? stderr : out, &deck, cm);
         code = (deck.nerrors || run.solver_errors) ? 2 : (run.ncrossing ? 1 : 0);
     }
     free(run.keep);
@@ -447,6 +466,7 @@ int prox_check_run(const prox_check_args *o, FILE *out, prox_status *st)
     int bodies = o->bodies || o->all || o->clearance > 0.0 || !m.ncells || m.nerrors;
     if (bodies) {
         int code = bodies_report(o, &m, out, st);
+        if (m.nerrors && code < 2) code = 2; /* the cell cards' errors are input errors too */
         prox_cells_free(&m);
         return code;
     }

@@ -279,6 +279,7 @@ static int render(const prox_cell_model *m, const plot_opts *o, const prox_cells
         code = 2;
     }
     cairo_surface_destroy(sf);
+    cairo_debug_reset_static_data(); /* cairo's caches, so that leak checkers see only real leaks */
     free(pix);
     return code;
 }

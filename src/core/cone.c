@@ -24,7 +24,7 @@ static double half_plane(const prox_cone *k, prox_vec3 y, double *rho, prox_vec3
     double t = prox_v3_dot(y, k->w);
     prox_vec3 p = across(y, k->w);
     *rho = prox_v3_norm(p);
-    *u = *rho > 0.0 ? prox_v3_scale(p, 1.0 / *rho) : prox_v3_any_perp(k->w);
+    *u = *rho > 0.0 ? prox_v3_normalize(p) : prox_v3_any_perp(k->w);
     return t;
 }
 

@@ -6,6 +6,9 @@
 static int coord_ok(double x) { return fabs(x) <= PROX_MAX_COORD; }
 static int coord3_ok(prox_vec3 v) { return coord_ok(v.x) & coord_ok(v.y) & coord_ok(v.z); }
 static int size_ok(double s) { return (s >= PROX_MIN_SIZE) & (s <= PROX_MAX_COORD); }
+/* Within the supported aspect ratio (shapes.h): the smallest dimension at least 1/PROX_MAX_ASPECT of the
+ * largest. */
+static int aspect_ok(double lo, double hi) { return lo * PROX_MAX_ASPECT >= hi; }
 
 /* A TRC is a frustum (r1, r2 > 0, either larger) or a full cone (one radius 0, the apex); equal
  * radii are an RCC and both zero a segment: PROX_EINVAL_TRC. */
@@ -20,6 +23,8 @@ PROX_API prox_status prox_trc_validate(const prox_trc *t)
     if (t->r1 < 0.0 || t->r2 < 0.0 || t->r1 == t->r2) return PROX_EINVAL_TRC;
     if (!size_ok(h)) return PROX_EINVAL_RANGE;
     if ((t->r1 > 0.0 && !size_ok(t->r1)) || (t->r2 > 0.0 && !size_ok(t->r2))) return PROX_EINVAL_RANGE;
+    double rm = fmax(t->r1, t->r2);
+    if (!aspect_ok(fmin(h, rm), fmax(h, rm))) return PROX_EINVAL_RANGE;
     return PROX_OK;
 }
 
@@ -43,6 +48,7 @@ PROX_API prox_status prox_rec_validate(const prox_rec *r)
     if (!ortho(r->axis, h, r->a1, l1) || !ortho(r->axis, h, r->a2, l2) || !ortho(r->a1, l1, r->a2, l2))
         return PROX_EINVAL_REC_ORTHO;
     if (!size_ok(h) || !size_ok(l1) || !size_ok(l2)) return PROX_EINVAL_RANGE;
+    if (!aspect_ok(fmin(h, fmin(l1, l2)), fmax(h, fmax(l1, l2)))) return PROX_EINVAL_RANGE;
     return PROX_OK;
 }
 
@@ -56,6 +62,7 @@ PROX_API prox_status prox_ell_validate(const prox_ell *e)
     double a = prox_v3_norm(e->axis);
     if (!(a > 0.0)) return PROX_EINVAL_AXIS;
     if (!size_ok(a) || !size_ok(e->radius)) return PROX_EINVAL_RANGE;
+    if (!aspect_ok(fmin(a, e->radius), fmax(a, e->radius))) return PROX_EINVAL_RANGE;
     return PROX_OK;
 }
 

@@ -59,6 +59,24 @@ static int hexagon_ok(const prox_rhp *h)
     return 1;
 }
 
+/* Within the supported aspect ratio (shapes.h): the width across every face (the spread of the
+ * corners along its normal) at least 1/PROX_MAX_ASPECT of the diameter; a flat plate or a needle
+ * has a face across which it is thinner. */
+static prox_status aspect_ok(const prox_shape *sh)
+{
+    prox_polytope p;
+    prox_polytope_make(sh, &p);
+    for (int f = 0; f < p.nf; ++f) {
+        double lo = INFINITY, hi = -INFINITY;
+        for (int i = 0; i < p.nv; ++i) {
+            double t = prox_v3_dot(p.n[f], p.v[i]);
+            lo = fmin(lo, t), hi = fmax(hi, t);
+        }
+        if (!((hi - lo) * PROX_MAX_ASPECT >= p.size)) return PROX_EINVAL_RANGE;
+    }
+    return PROX_OK;
+}
+
 PROX_API prox_status prox_rhp_validate(const prox_rhp *h)
 {
     if (!h) return PROX_EINVAL_ARG;
@@ -71,7 +89,9 @@ PROX_API prox_status prox_rhp_validate(const prox_rhp *h)
         if ((s = size_vec(h->r[i], PROX_EINVAL_RHP))) return s;
         if (abs_cos(h->r[i], h->axis) > PROX_BOX_ORTHO_TOL) return PROX_EINVAL_RHP;
     }
-    return hexagon_ok(h) ? PROX_OK : PROX_EINVAL_RHP;
+    if (!hexagon_ok(h)) return PROX_EINVAL_RHP;
+    prox_shape sh = prox_shape_from_rhp(*h);
+    return aspect_ok(&sh);
 }
 
 PROX_API prox_status prox_rhp_regular(prox_vec3 base, prox_vec3 axis, prox_vec3 r, prox_rhp *out)
@@ -103,7 +123,8 @@ PROX_API prox_status prox_wed_validate(const prox_wed *w)
         return PROX_EINVAL_WED;
     prox_vec3 c = prox_v3_cross(prox_v3_normalize(w->v1), prox_v3_normalize(w->v2));
     if (!(prox_v3_norm(c) > PROX_TOL_POLY_DEGEN)) return PROX_EINVAL_WED;
-    return PROX_OK;
+    prox_shape sh = prox_shape_from_wed(*w);
+    return aspect_ok(&sh);
 }
 
 /* ---- ARB ---- */
@@ -207,5 +228,5 @@ PROX_API prox_status prox_arb_validate(const prox_arb *a)
     prox_polytope_make(&sh, &p);
     if ((s = arb_solid_ok(&p))) return s;
     if (!size_ok(p.size)) return PROX_EINVAL_RANGE;
-    return PROX_OK;
+    return aspect_ok(&sh);
 }

@@ -1385,6 +1385,7 @@ static prox_signed_result signed_scaled(cvx *s, prox_convex_info *info)
     }
     depth_cover(s, info);
     finish_overlap(s, &r);
+    info->upper = -r.sd; /* the depth reported (within PROX_TOL_TOUCH S of the best found) */
     return r;
 }
 
@@ -1415,14 +1416,16 @@ static double outside2(const cvx *s, prox_vec3 x)
     return fmax(prox_v3_dist(x, prox_body_closest(&s->a, x)), prox_v3_dist(x, prox_body_closest(&s->b, x)));
 }
 
-/* A touching pair's common point: from the witnesses of the least overlap (p1 on A's boundary, p2 on
- * B's, p2 - p1 = -depth n), whose middle is within depth / 2 of both solids. */
+/* A touching pair's common point: the middle of the witnesses of its signed distance (global starts
+ * and local searches, no cover), p2 - p1 = sd n, which is within |sd| / 2 of both solids. */
 static prox_vec3 touching_point(cvx *s)
 {
-    cell_newton(s, s->best_d);
-    kinks_local(s, s->best_d, CVX_LOCAL);
     prox_signed_result r = {0};
-    finish_overlap(s, &r);
+    if (depth_starts(s)) {
+        search_disjoint(s);
+        cvx_answer a = finish_disjoint(s, NULL);
+        r.p1 = a.p1, r.p2 = a.p2;
+    } else finish_overlap(s, &r);
     return prox_v3_scale(prox_v3_add(r.p1, r.p2), 0.5);
 }
 

@@ -44,8 +44,8 @@ prox_signed_result prox_convex_signed_ex(const prox_body *a, const prox_body *b,
 prox_distance_result prox_convex_distance_ex(const prox_body *a, const prox_body *b, prox_convex_info *info);
 
 /* How many times the slow global search has run since the start of the process (all threads): the
- * disjoint search's sweep of every kink circle when the local search could not certify, and every
- * depth query's cover of the sphere beyond its first levels. */
+ * disjoint search's sweep of every kink circle when the local search could not certify (rare), and
+ * the cover of the sphere that certifies a depth (every overlapping signed distance). */
 unsigned long prox_convex_global_count(void);
 
 #endif

@@ -222,6 +222,7 @@ typedef struct dp_cell {
     prox_vec3 wq, ezq, ezp; /* Q's axis; the outward normals eq wq, ep wp of the two end planes */
     double cut, tol;
     double lq; /* bound of |q - c_P| + r_P: the turn rate of f[4] from its direction u_P */
+    int budget; /* evaluations left before the scan gives up (the cell is then solved) */
 } dp_cell;
 
 enum { DP_NCOND = 6 };
@@ -229,8 +230,9 @@ enum { DP_NCOND = 6 };
 /* The conditions at x = x(theta), each <= 0 at a cell minimiser (dp_cell_may), q the closest point
  * of rim Q to x: f[0] = rho_Q(x) - r_Q, f[1] = ezq.(x - c_Q), f[2] = |x - q| - cut (1-Lipschitz in
  * x); f[3] = ezp.(q - c_P), f[4] = (q - x).u_P(x) (through q; -inf when x is on Q's axis). */
-static void dp_cell_vals(const dp_cell *g, double th, double f[DP_NCOND])
+static void dp_cell_vals(dp_cell *g, double th, double f[DP_NCOND])
 {
+    --g->budget;
     double c = cos(th), s = sin(th);
     prox_vec3 ru = prox_v3_add(prox_v3_scale(g->p->u, c), prox_v3_scale(g->p->v, s)); /* u_P(x) */
     prox_vec3 x = prox_v3_add(g->p->c, prox_v3_scale(ru, g->p->r)), d = prox_v3_sub(x, g->q->c);
@@ -255,8 +257,8 @@ static void dp_cell_vals(const dp_cell *g, double th, double f[DP_NCOND])
  * + f(t1) - L (t1 - t0)) / 2 on the interval. x moves at speed r_P, so L = r_P for f[0..2]; q moves at
  * most r_Q / rho_Q times as fast as x (rho_Q >= rho_lo on the interval, from f[0]), so L = r_P r_Q /
  * rho_lo for f[3], plus the turn of u_P times |q - x| <= |q - c_P| + r_P for f[4]. Undecided
- * intervals are halved `depth` more times. */
-static int dp_cell_span(const dp_cell *g, double t0, const double *f0, double t1, const double *f1, int depth)
+ * intervals are halved `depth` more times while the evaluation budget lasts (undecided: 1). */
+static int dp_cell_span(dp_cell *g, double t0, const double *f0, double t1, const double *f1, int depth)
 {
     double w = t1 - t0, L = g->p->r * w;
     for (int k = 0; k < 3; ++k)
@@ -270,7 +272,7 @@ static int dp_cell_span(const dp_cell *g, double t0, const double *f0, double t1
         double dhi = 0.5 * (f0[2] + f1[2] + L) + g->cut;
         if (f0[5] * f1[5] > 0.0 && 0.5 * (fabs(f0[5]) + fabs(f1[5]) - L - Lq - dhi * w) > g->tol) return 0;
     }
-    if (depth == 0) return 1;
+    if (depth == 0 || g->budget <= 0) return 1;
     double tm = 0.5 * (t0 + t1), fm[DP_NCOND];
     dp_cell_vals(g, tm, fm);
     return dp_cell_span(g, t0, f0, tm, fm, depth - 1) || dp_cell_span(g, tm, fm, t1, f1, depth - 1);
@@ -289,7 +291,7 @@ static int dp_cell_span(const dp_cell *g, double t0, const double *f0, double t1
 static int dp_cell_may(const prox_fcircle *p, const prox_body *kp, int ep, const prox_fcircle *q, const prox_body *kq,
                        int eq, double cut, double tol)
 {
-    enum { N = 8, DEPTH = 6 };
+    enum { N = 8, DEPTH = 12, BUDGET = 256 };
     dp_cell g = {.p = p,
                  .q = q,
                  .wq = kq->cyl.w,
@@ -297,7 +299,8 @@ static int dp_cell_may(const prox_fcircle *p, const prox_body *kp, int ep, const
                  .ezp = prox_v3_scale(kp->cyl.w, (double)ep),
                  .cut = cut,
                  .tol = tol,
-                 .lq = prox_v3_dist(q->c, p->c) + q->r + p->r};
+                 .lq = prox_v3_dist(q->c, p->c) + q->r + p->r,
+                 .budget = BUDGET};
     double f0[DP_NCOND], fa[DP_NCOND], fb[DP_NCOND];
     dp_cell_vals(&g, 0.0, f0);
     memcpy(fa, f0, sizeof fa);

@@ -1,7 +1,6 @@
 /* Broad phase of scene queries (src/scene/broad.h): every pair of boxes that come within c of each
- * other, found with a bounding volume hierarchy instead of a sort-and-sweep along one axis, so that
- * the work grows with the pairs near enough to test and not with the bodies a slab along one axis
- * happens to hold.
+ * other, found with a bounding volume hierarchy, so that the work grows with the pairs near enough to
+ * test and not with the bodies a slab along one axis happens to hold.
  *
  * Each box is enlarged to E = [lo, hi + c]: two boxes come within c on an axis (lo_j <= hi_i + c and
  * lo_i <= hi_j + c) exactly when their enlarged intervals overlap, with the same rounding as the test

@@ -246,8 +246,10 @@ static int parse_long(const char *s, long *out)
 }
 
 /* Length of the MCNP number at the start of s: [+-] digits [. digits] | [+-] . digits, then an
- * optional exponent [eEdD][+-]digits. 0 when s does not start with such a number. Inf, NaN, hex and
- * Fortran exponents without a letter (1.5-3) are not numbers here. */
+ * optional exponent [eEdD][+-]digits or, with the letter left out, [+-]digits: MCNP reads its entries
+ * as Fortran real input, where an exponent may be a signed integer alone (Fortran 2008, 10.7.2.3.2:
+ * "1.5-3" is 1.5e-3); the MCNP6 criticality validation decks write densities so (4.7328-2). 0 when s
+ * does not start with such a number. Inf, NaN and hex are not numbers here. */
 static size_t number_length(const char *s)
 {
     size_t i = 0, digits = 0;
@@ -264,6 +266,9 @@ static size_t number_length(const char *s)
         if (!isdigit((unsigned char)s[j])) return i; /* "2d" etc: the letter is not an exponent */
         while (isdigit((unsigned char)s[j])) ++j;
         i = j;
+    } else if ((s[i] == '+' || s[i] == '-') && isdigit((unsigned char)s[i + 1])) {
+        ++i;
+        while (isdigit((unsigned char)s[i])) ++i;
     }
     return i;
 }
@@ -272,9 +277,14 @@ static size_t number_length(const char *s)
 static int convert_number(const char *s, size_t len, double *out)
 {
     char buf[64];
-    if (len >= sizeof buf) return -1;
-    for (size_t i = 0; i < len; ++i) buf[i] = (s[i] == 'd' || s[i] == 'D') ? 'e' : s[i];
-    buf[len] = 0;
+    if (len + 1 >= sizeof buf) return -1;
+    size_t k = 0;
+    for (size_t i = 0; i < len; ++i) {
+        /* A sign after the mantissa starts a Fortran exponent without its letter: write the e. */
+        if (i && (s[i] == '+' || s[i] == '-') && buf[k - 1] != 'e' && buf[k - 1] != 'E') buf[k++] = 'e';
+        buf[k++] = (s[i] == 'd' || s[i] == 'D') ? 'e' : s[i];
+    }
+    buf[k] = 0;
     double v = strtod(buf, NULL);
     if (!isfinite(v)) return -1;
     *out = v;
@@ -1064,8 +1074,9 @@ static void chain_names(const parser *p, const char *next, char *buf, size_t sz)
 }
 
 /* Reads a READ card (line s of n characters, virtual line v) and, when READ cards are followed,
- * opens its file as the next source. Keywords: FILE=name, NOECHO, DECODE=..., ENCODE=... */
-static void read_card(parser *p, char *s, size_t n, int v)
+ * opens its file as the next source. Keywords: FILE=name, NOECHO, DECODE=..., ENCODE=...; `block`:
+ * the block the card is in. */
+static void read_card(parser *p, char *s, size_t n, int v, int block)
 {
     char *dollar = memchr(s, '$', n);
     if (dollar) n = (size_t)(dollar - s);
@@ -1152,8 +1163,13 @@ static void read_card(parser *p, char *s, size_t n, int v)
         else {
             int cut;
             const char *name = shown_name(path, &cut);
-            add_note(p, 0, v, "READ FILE=%.40s: %s '%s%s'", file,
-                     r == 1 ? "cannot read" : "holds NUL bytes, not a text file:", cut ? "..." : "", name);
+            /* In the data block a missing file (most often the material cards, kept apart) leaves
+             * the geometry whole: its cards are listed as not read, not an error; a TRn it held
+             * is then reported where a surface or cell names it. */
+            int data = block == B_DATA && r == 1;
+            add_note(p, data, v, "READ FILE=%.40s: %s '%s%s'%s", file,
+                     r == 1 ? "cannot read" : "holds NUL bytes, not a text file:", cut ? "..." : "", name,
+                     data ? ": its data cards are not read" : "");
         }
         free(path);
         return;
@@ -1253,7 +1269,7 @@ static void read_blocks(parser *p, const char *text)
         m = column_limit(p, buf, m, line);
         if (!amp && is_read_card(buf, m)) { /* ends the card before it; its file comes next */
             flush_card(p, &c, block);
-            read_card(p, buf, m, line);
+            read_card(p, buf, m, line, block);
             continue;
         }
         if (feed_line(p, &c, &amp, buf, m, line, block)) p->nomem = 1;

@@ -503,6 +503,7 @@ def test_arb_faces_as_non_integers():
         faces[2] = bad
         a = prox.ARB(corners, faces)
         assert a.validate()[0] == prox.STATUS_EINVAL_ARB_FACE, bad
+        assert a.faces[0].tolist() == HEXA_FACES[:2] + [-1] + HEXA_FACES[3:]
         r = prox.distance(a, sph)
         assert r.status[0] == prox.STATUS_EINVAL_ARB_FACE and math.isnan(r.distance[0])
 
