@@ -61,7 +61,7 @@ void bench_note(bench_case *c, const char *fmt, ...)
 }
 
 /* Case-name prefixes of the groups: a filter starting with one sets up that group only. */
-static const char *const g_groups[] = {"poly/", "prim/", "rcc/", "peer/", "stress/", "query/", "xcheck/", "scene"};
+static const char *const g_groups[] = {"poly/", "prim/", "rcc/", "peer/", "stress/", "query/", "xcheck/", "scene", "mix/"};
 
 int bench_selected(const bench_opts *o, const char *name)
 {

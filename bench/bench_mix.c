@@ -276,9 +276,25 @@ static bench_accuracy mix_accuracy(const mix_method *m, const mix_set *s, void *
     return acc;
 }
 
-static void mix_register(const char *fam, const mix_method *m, const mix_set *s, int is_prox)
+/* 1 when --filter can select one of the method's cases of the family (a free substring filter such as
+ * "/agarwal" names none of them: the family's set-up, which runs every method for its accuracy, is
+ * then skipped). */
+static int mix_wanted(const bench_opts *o, const char *fam, const char *method)
+{
+    if (!o->filter) return 1;
+    static const char *const subs[] = {"all", "overlap", "disjoint"};
+    char name[96];
+    for (int k = 0; k < 3; ++k) {
+        snprintf(name, sizeof name, "mix/%s/%s/%s", fam, method, subs[k]);
+        if (strstr(name, o->filter) || !strncmp(o->filter, name, strlen(o->filter))) return 1;
+    }
+    return 0;
+}
+
+static void mix_register(const bench_opts *o, const char *fam, const mix_method *m, const mix_set *s, int is_prox)
 {
     if (m->skip && m->skip(s->a[0].kind, s->b[0].kind)) return;
+    if (!mix_wanted(o, fam, m->name)) return;
     void **pa = bench_xmalloc(s->n * sizeof *pa), **pb = bench_xmalloc(s->n * sizeof *pb);
     for (size_t i = 0; i < s->n; ++i) {
         pa[i] = m->prepare(&s->a[i]), pb[i] = m->prepare(&s->b[i]);
@@ -342,18 +358,26 @@ static void mix_family(const bench_opts *o, prox_shape_kind ka, prox_shape_kind 
     snprintf(fam, sizeof fam, "%s-%s", prox_shape_kind_name(ka), prox_shape_kind_name(kb));
     snprintf(name, sizeof name, "mix/%s/", fam);
     if (!bench_selected(o, name)) return;
-    mix_set *s = bench_xmalloc(sizeof *s);
-    if (!mix_build(o, ka, kb, seed, s)) {
-        fprintf(stderr, "prox_bench: mix/%s skipped: the library does not answer this pair type\n", fam);
-        return;
-    }
-    for (size_t k = 0; k < sizeof k_prox / sizeof k_prox[0]; ++k) mix_register(fam, &k_prox[k], s, 1);
+    int wanted = 0;
+    for (size_t k = 0; k < sizeof k_prox / sizeof k_prox[0]; ++k) wanted |= mix_wanted(o, fam, k_prox[k].name);
     int (*peers[])(const mix_method **) = {bench_mix_fcl_methods, bench_mix_coal_methods, bench_mix_bullet_methods,
                                            bench_mix_ccd_methods};
     for (size_t p = 0; p < sizeof peers / sizeof peers[0]; ++p) {
         const mix_method *list;
         int n = peers[p](&list);
-        for (int k = 0; k < n; ++k) mix_register(fam, &list[k], s, 0);
+        for (int k = 0; k < n; ++k) wanted |= mix_wanted(o, fam, list[k].name);
+    }
+    if (!wanted) return;
+    mix_set *s = bench_xmalloc(sizeof *s);
+    if (!mix_build(o, ka, kb, seed, s)) {
+        fprintf(stderr, "prox_bench: mix/%s skipped: the library does not answer this pair type\n", fam);
+        return;
+    }
+    for (size_t k = 0; k < sizeof k_prox / sizeof k_prox[0]; ++k) mix_register(o, fam, &k_prox[k], s, 1);
+    for (size_t p = 0; p < sizeof peers / sizeof peers[0]; ++p) {
+        const mix_method *list;
+        int n = peers[p](&list);
+        for (int k = 0; k < n; ++k) mix_register(o, fam, &list[k], s, 0);
     }
 }
 
