@@ -4,7 +4,7 @@
  * then the cost of each query mode and of the batch API on one seeded set of pairs. Inputs are built
  * before timing; each figure is the median of 3 runs.
  *
- * Scaling mode (docs/perf/scene_scaling.md): with PROX_BENCH_SCENE_N=n in the environment the group
+ * Scaling mode (docs/PERFORMANCE.md, "Scenes"): with PROX_BENCH_SCENE_N=n in the environment the group
  * runs only the question of `prox check` (RELATION at clearance 0) on n RCC/RPP/SPH bodies at the
  * same density, once on 1 and once on 2 threads, so that /usr/bin/time -v of the process gives the
  * peak memory of one size: PROX_BENCH_SCENE_N=1000000 /usr/bin/time -v prox_bench --filter scene */

@@ -7,7 +7,7 @@
 /// the exact solver the mode asks for (query.h). A scene adds a broad phase (a bounding volume
 /// hierarchy over the bodies' boxes) so that pairs whose boxes lie farther apart than the question
 /// cares about are never looked at one by one: its work grows with the bodies and the pairs near
-/// enough to test, not with the square of the bodies. See docs/scene.md and docs/perf/scene_scaling.md.
+/// enough to test, not with the square of the bodies. See docs/scene.md and docs/PERFORMANCE.md ("Scenes").
 #ifndef PROX_SCENE_H
 #define PROX_SCENE_H
 

@@ -1,5 +1,5 @@
 /* Internal (scene): the broad phase of scene queries and the small thread helper the scene stages
- * share. src/scene/broad.c explains the bounding volume hierarchy; docs/perf/scene_scaling.md
+ * share. src/scene/broad.c explains the bounding volume hierarchy; docs/PERFORMANCE.md, "Scenes"
  * measures it. */
 #ifndef PROX_SCENE_BROAD_H
 #define PROX_SCENE_BROAD_H
