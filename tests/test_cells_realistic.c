@@ -12,7 +12,7 @@
 #include <string.h>
 #include <sys/wait.h>
 
-#include "test_util.h"
+#include "test_cli_util.h"
 #include "prox/cellcheck.h"
 #include "prox/cells.h"
 #include "scene/deck_internal.h"
@@ -148,31 +148,6 @@ static void test_infinite_pin_lattice(void **state)
     assert_int_equal(r.ngaps, 0);
     prox_cells_report_free(&r);
     prox_cells_free(&m);
-}
-
-/* Runs the CLI; returns its exit status and its stdout (malloc'd). */
-static int run_cli(const char *args, char **out)
-{
-    char cmd[4096];
-    snprintf(cmd, sizeof cmd, "'%s' %s 2>/dev/null", PROX_CLI_PATH, args);
-    FILE *p = popen(cmd, "r");
-    assert_non_null(p);
-    size_t n = 0, cap = 1 << 16;
-    char *buf = malloc(cap);
-    assert_non_null(buf);
-    for (size_t got; (got = fread(buf + n, 1, cap - n - 1, p)) > 0;) {
-        n += got;
-        if (cap - n < 1024) {
-            cap *= 2;
-            buf = realloc(buf, cap);
-            assert_non_null(buf);
-        }
-    }
-    buf[n] = 0;
-    int st = pclose(p);
-    assert_true(WIFEXITED(st));
-    *out = buf;
-    return WEXITSTATUS(st);
 }
 
 /* A cell on an undefined surface: the deck is not cell-checked, the error is named with its line

@@ -9,80 +9,15 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "test_util.h"
+#include "test_cli_util.h"
 #include "prox/deck.h"
 #include "prox/query.h"
 
 #define EXAMPLE PROX_SOURCE_DIR "/examples/cask.mcnp"
 
-static int have_cli(void) { return PROX_CLI_PATH[0] != 0; }
-
-/* Runs the CLI with `args` (after the environment settings `env`); returns its exit status and its
- * stdout (malloc'd) in *out. */
-static int run_cli_env(const char *env, const char *args, char **out)
-{
-    char cmd[4096];
-    snprintf(cmd, sizeof cmd, "%s '%s' %s 2>/dev/null", env, PROX_CLI_PATH, args);
-    FILE *p = popen(cmd, "r");
-    assert_non_null(p);
-    size_t n = 0, cap = 1 << 16;
-    char *buf = malloc(cap);
-    assert_non_null(buf);
-    for (size_t got; (got = fread(buf + n, 1, cap - n - 1, p)) > 0;) {
-        n += got;
-        if (cap - n < 1024) {
-            cap *= 2;
-            buf = realloc(buf, cap);
-            assert_non_null(buf);
-        }
-    }
-    buf[n] = 0;
-    int st = pclose(p);
-    assert_true(WIFEXITED(st));
-    *out = buf;
-    return WEXITSTATUS(st);
-}
-
-static int run_cli(const char *args, char **out) { return run_cli_env("", args, out); }
-
 /* prox plot under the sanitizers: fontconfig (through cairo's text) keeps caches to the end of the
  * process, which LeakSanitizer reports; they are the system library's, not prox's. */
 static int run_plot(const char *args, char **out) { return run_cli_env("ASAN_OPTIONS=detect_leaks=0", args, out); }
-
-static size_t count(const char *hay, const char *needle)
-{
-    size_t c = 0;
-    for (const char *s = hay; (s = strstr(s, needle)) != NULL; s += strlen(needle)) ++c;
-    return c;
-}
-
-static void temp_deck(const char *text, char path[64])
-{
-    strcpy(path, "/tmp/prox_test_cells_XXXXXX");
-    int fd = mkstemp(path);
-    assert_true(fd >= 0);
-    size_t n = strlen(text);
-    assert_int_equal(write(fd, text, n), (ssize_t)n);
-    close(fd);
-}
-
-/* The three numbers of the first JSON array after `key`. */
-static prox_vec3 json_vec_after(const char *s, const char *key)
-{
-    const char *p = strstr(s, key);
-    assert_non_null(p);
-    p = strchr(p, '[');
-    assert_non_null(p);
-    double v[3];
-    char *end;
-    ++p;
-    for (int i = 0; i < 3; ++i) {
-        v[i] = strtod(p, &end);
-        assert_true(end != p);
-        p = end + 1;
-    }
-    return prox_v3(v[0], v[1], v[2]);
-}
 
 /* Whether point x lies in the body of surface `surf` of the deck (distance from a tiny sphere 0). */
 static int in_body(const prox_deck *d, long surf, prox_vec3 x)
