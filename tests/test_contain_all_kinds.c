@@ -10,19 +10,6 @@
 
 #define NK PROX_SHAPE_KIND_COUNT_
 
-static char ctx[128];
-#define check(c)                                    \
-    do {                                            \
-        if (!(c)) {                                 \
-            print_error("%s: %s\n", ctx, #c);       \
-            fail();                                 \
-        }                                           \
-    } while (0)
-#define check_near(x, y, t)                                                        \
-    do {                                                                           \
-        if (!(fabs((double)(x) - (double)(y)) <= (t))) print_error("%s\n", ctx);   \
-        assert_near(x, y, t);                                                      \
-    } while (0)
 
 static void set_ctx(const prox_shape *a, const prox_shape *b, int t)
 {

@@ -447,4 +447,19 @@ static inline prox_shape tk_random_shape(test_rng *g, prox_shape_kind k, prox_ve
     }
 }
 
+/* The pair under test (set by each test), printed with a failure of check / check_near. */
+static char ctx[128];
+#define check(c)                                                \
+    do {                                                        \
+        if (!(c)) {                                             \
+            print_error("%s: %s\n", ctx, #c);                   \
+            fail();                                             \
+        }                                                       \
+    } while (0)
+#define check_near(x, y, t)                                     \
+    do {                                                        \
+        if (!(fabs((double)(x) - (double)(y)) <= (t))) print_error("%s\n", ctx); \
+        assert_near(x, y, t);                                   \
+    } while (0)
+
 #endif

@@ -8,20 +8,6 @@
 
 #define NK PROX_SHAPE_KIND_COUNT_
 
-/* The pair under test, printed with a failure. */
-static char ctx[128];
-#define check(c)                                                \
-    do {                                                        \
-        if (!(c)) {                                             \
-            print_error("%s: %s\n", ctx, #c);                   \
-            fail();                                             \
-        }                                                       \
-    } while (0)
-#define check_near(x, y, t)                                     \
-    do {                                                        \
-        if (!(fabs((double)(x) - (double)(y)) <= (t))) print_error("%s\n", ctx); \
-        assert_near(x, y, t);                                   \
-    } while (0)
 static void set_ctx(const prox_shape *a, const prox_shape *b, int t)
 {
     snprintf(ctx, sizeof ctx, "%s-%s trial %d", prox_shape_kind_name(a->kind), prox_shape_kind_name(b->kind), t);
