@@ -208,6 +208,28 @@ static void test_fuzz_sph_rcc_subnormal_normal(void **state)
     assert_near(fabs(r.normal.z), 1.0, 1e-15);
 }
 
+/* fuzz/crashes/pairs-signed-witness-*: a cone whose base radius is 4e-91 (its apex, in effect, at the
+ * origin) against a disk 4e-33 wide and 5e-72 thick sitting on that apex. The signed distance (-0)
+ * was right, but the cone's base disk as a support set had a Gram determinant that underflows: its
+ * projections were NaN and both witnesses fell back to the pair's centre (0, 0, 1), one unit outside
+ * the disk. The witnesses must lie in their solids and p2 - p1 = sd normal. */
+static void test_fuzz_signed_witness_tiny_disk(void **state)
+{
+    (void)state;
+    prox_shape a = prox_shape_from_trc((prox_trc){prox_v3(0, 0, 0), prox_v3(0, 0, 2), 3.8e-91, 0.0025});
+    prox_shape b = prox_shape_from_rcc((prox_rcc){prox_v3(1.3e-71, 0, 0), prox_v3(0, 4.6e-72, 2e-76), 3.9e-33});
+    assert_int_equal(prox_shape_validate(&a), PROX_OK);
+    assert_int_equal(prox_shape_validate(&b), PROX_OK);
+    prox_signed_result r = prox_shape_signed_distance(&a, &b);
+    assert_int_equal(r.status, PROX_OK);
+    double S = prox_shape_pair_scale(&a, &b), r0 = 1e-12 * S;
+    prox_shape ba = prox_shape_from_sph((prox_sph){r.p1, r0}), bb = prox_shape_from_sph((prox_sph){r.p2, r0});
+    assert_true(prox_shape_distance(&a, &ba).distance <= r0);
+    assert_true(prox_shape_distance(&b, &bb).distance <= r0);
+    assert_true(r.sd <= 0.0 && r.sd >= -1e-12 * S);
+    assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-12 * S);
+}
+
 /* fuzz/crashes/pairs-needle-wed-*, pairs-flat-rhp-rcc-*: a wedge whose triangle sides were 1e-19 of its
  * height and hexagonal plates 1e-23 to 1e-110 as thick as wide gave order-dependent, wrong distances.
  * Such bodies lie outside the supported aspect ratio (PROX_MAX_ASPECT, shapes.h) and are named
@@ -256,6 +278,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_ell_subnormal_rho),
         cmocka_unit_test(test_fuzz_sph_rcc_subnormal_normal),
         cmocka_unit_test(test_fuzz_degenerate_aspect),
+        cmocka_unit_test(test_fuzz_signed_witness_tiny_disk),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -582,8 +582,12 @@ static cvx_set set_point(prox_vec3 p)
     return f;
 }
 
+/* Coordinates here are in units of the pair scale (pair_make): a segment or a disk no larger than
+ * PROX_TOL_NOISE is its centre within rounding, and is kept as that point (a disk of radius 1e-91 has
+ * a Gram determinant that underflows, which would make its projections NaN). */
 static cvx_set set_segment(prox_vec3 m, prox_vec3 e, double h)
 {
+    if (!(fabs(h) * prox_v3_norm(e) > PROX_TOL_NOISE)) return set_point(m);
     cvx_set f = {0};
     f.nv = 2;
     f.v[0] = prox_v3_mad(m, -h, e);
@@ -593,6 +597,7 @@ static cvx_set set_segment(prox_vec3 m, prox_vec3 e, double h)
 
 static cvx_set set_ellipse(prox_vec3 c, prox_vec3 e1, prox_vec3 e2)
 {
+    if (!(fmax(prox_v3_norm(e1), prox_v3_norm(e2)) > PROX_TOL_NOISE)) return set_point(c);
     cvx_set f = {0};
     f.ell = 1, f.c = c, f.e1 = e1, f.e2 = e2;
     return f;
@@ -961,11 +966,20 @@ static void sets_pair(const cvx_set *fa, const cvx_set *fb, prox_vec3 n, prox_ve
  * a face tilted by more is one extreme point, which is exact where the tilted face's lift is not). */
 static const double cvx_ftol[2] = {PROX_TOL_FACE, PROX_TOL_NOISE};
 
+/* The extreme points of A along n and of B along -n: the witnesses when no reading of the support
+ * sets gives a finite pair. */
+static void support_points(const cvx *s, prox_vec3 n, prox_vec3 *p1, prox_vec3 *p2)
+{
+    *p1 = prox_v3_add(s->a.c, prox_body_pc(&s->a, n));
+    *p2 = prox_v3_add(s->b.c, prox_body_pc(&s->b, prox_v3_neg(n)));
+}
+
 /* Disjoint: the closest pair of the support sets along n over the readings, polished by alternating
  * exact projections onto the solids (which never increase |p2 - p1| and keep p1 in A, p2 in B). */
 static double witness_disjoint(const cvx *s, prox_vec3 n, prox_vec3 *p1, prox_vec3 *p2)
 {
-    double best = INFINITY;
+    support_points(s, n, p1, p2);
+    double best = prox_v3_dist(*p1, *p2);
     for (int i = 0; i < 2; ++i)
         for (int j = 0; j < 2; ++j) {
             cvx_set fa = support_set(&s->a, n, cvx_ftol[i]), fb = support_set(&s->b, prox_v3_neg(n), cvx_ftol[j]);
@@ -989,7 +1003,8 @@ static double witness_disjoint(const cvx *s, prox_vec3 n, prox_vec3 *p1, prox_ve
  * distance. */
 static double witness_overlap(const cvx *s, prox_vec3 n, double sd, prox_vec3 *p1, prox_vec3 *p2)
 {
-    double best = INFINITY;
+    support_points(s, n, p1, p2);
+    double best = prox_v3_norm(prox_v3_mad(prox_v3_sub(*p2, *p1), -sd, n));
     for (int i = 0; i < 2; ++i)
         for (int j = 0; j < 2; ++j) {
             cvx_set fa = support_set(&s->a, n, cvx_ftol[i]), fb = support_set(&s->b, prox_v3_neg(n), cvx_ftol[j]);
@@ -1371,6 +1386,7 @@ static void finish_overlap(cvx *s, prox_signed_result *r)
     int nc = answer_candidates(s, c, 24);
     double best = INFINITY, lim = s->best_phi + PROX_TOL_TOUCH * s->S;
     r->sd = -s->best_phi, r->normal = s->best_d;
+    support_points(s, s->best_d, &r->p1, &r->p2);
     for (int k = 0; k < nc; ++k) {
         double f = phi_eval(s, c[k]);
         if (!(f <= lim)) continue;
