@@ -28,6 +28,7 @@
  * kinks run once more from the best direction the cover left (it can be a non-stationary cell centre). */
 #include "convex.h"
 
+#include "core/plane2.h"
 #include "core/tol.h"
 
 #include <float.h>
@@ -703,15 +704,8 @@ static cvx_set support_set(const prox_body *b, prox_vec3 d, double ftol)
 
 /* ---- closest pair of two support sets seen along n (in the plane perpendicular to n) ------------ */
 
-typedef struct v2 {
-    double x, y;
-} v2;
-
-static v2 v2_sub(v2 a, v2 b) { v2 r = {a.x - b.x, a.y - b.y}; return r; }
-static v2 v2_mad(v2 a, double s, v2 b) { v2 r = {a.x + s * b.x, a.y + s * b.y}; return r; }
-static double v2_dot(v2 a, v2 b) { return a.x * b.x + a.y * b.y; }
-static double v2_cross(v2 a, v2 b) { return a.x * b.y - a.y * b.x; }
-static double v2_norm(v2 a) { return prox_hypot2(a.x, a.y); }
+/* Points of that plane (coordinates along u, v): core/plane2.h. */
+typedef prox_v2 v2;
 
 /* A set seen along n: a convex polygon (hull of the set's points, counter-clockwise, idx naming the
  * 3D points) or an ellipse q + E z, |z| <= 1 (E columns E1, E2). */
@@ -750,13 +744,13 @@ static void hull2(const v2 *p, int n, set2 *s)
         int start = m;
         for (int ii = 0; ii < n; ++ii) {
             int i = pass == 0 ? ord[ii] : ord[n - 1 - ii];
-            while (m >= start + 2 && v2_cross(v2_sub(p[h[m - 1]], p[h[m - 2]]), v2_sub(p[i], p[h[m - 2]])) <= 0.0) --m;
+            while (m >= start + 2 && prox_v2_cross(prox_v2_sub(p[h[m - 1]], p[h[m - 2]]), prox_v2_sub(p[i], p[h[m - 2]])) <= 0.0) --m;
             h[m++] = i;
         }
         --m; /* the last point starts the other chain */
     }
     if (m < 1) m = 1, h[0] = ord[0];
-    if (m == 2 && v2_norm(v2_sub(p[h[0]], p[h[1]])) == 0.0) m = 1;
+    if (m == 2 && prox_v2_norm(prox_v2_sub(p[h[0]], p[h[1]])) == 0.0) m = 1;
     s->nv = m;
     for (int i = 0; i < m; ++i) s->v[i] = p[h[i]], s->idx[i] = h[i];
 }
@@ -769,7 +763,7 @@ static set2 set_2d(const frame2 *F, const cvx_set *f)
         s.q = to2(F, f->c);
         s.E1.x = prox_v3_dot(f->e1, F->u), s.E1.y = prox_v3_dot(f->e1, F->v);
         s.E2.x = prox_v3_dot(f->e2, F->u), s.E2.y = prox_v3_dot(f->e2, F->v);
-        s.det = v2_cross(s.E1, s.E2);
+        s.det = prox_v2_cross(s.E1, s.E2);
         return s;
     }
     v2 p[PROX_POLY_MAXV];
@@ -781,7 +775,7 @@ static set2 set_2d(const frame2 *F, const cvx_set *f)
 /* z = E^-1 (x - q): the ellipse's own coordinates (the unit disk). */
 static v2 ell_local(const set2 *E, v2 x)
 {
-    v2 r = v2_sub(x, E->q), z = {(r.x * E->E2.y - r.y * E->E2.x) / E->det, (E->E1.x * r.y - E->E1.y * r.x) / E->det};
+    v2 r = prox_v2_sub(x, E->q), z = {(r.x * E->E2.y - r.y * E->E2.x) / E->det, (E->E1.x * r.y - E->E1.y * r.x) / E->det};
     return z;
 }
 
@@ -796,16 +790,16 @@ static v2 ell_point(const set2 *E, v2 z)
 static v2 ell_proj(const set2 *E, v2 x)
 {
     v2 z0 = ell_local(E, x);
-    if (v2_dot(z0, z0) <= 1.0) return x;
-    double g11 = v2_dot(E->E1, E->E1), g12 = v2_dot(E->E1, E->E2), g22 = v2_dot(E->E2, E->E2);
+    if (prox_v2_dot(z0, z0) <= 1.0) return x;
+    double g11 = prox_v2_dot(E->E1, E->E1), g12 = prox_v2_dot(E->E1, E->E2), g22 = prox_v2_dot(E->E2, E->E2);
     double m = 0.5 * (g11 + g22), dd = prox_hypot2(0.5 * (g11 - g22), g12), l1 = m + dd, l2 = (g11 * g22 - g12 * g12) / l1;
     v2 e1 = {g12, l1 - g11}, e1b = {l1 - g22, g12};
-    if (v2_norm(e1b) > v2_norm(e1)) e1 = e1b;
-    double en = v2_norm(e1);
+    if (prox_v2_norm(e1b) > prox_v2_norm(e1)) e1 = e1b;
+    double en = prox_v2_norm(e1);
     if (!(en > 0.0)) e1.x = g11 >= g22 ? 1.0 : 0.0, e1.y = g11 >= g22 ? 0.0 : 1.0, en = 1.0;
     e1.x /= en, e1.y /= en;
-    v2 e2 = {-e1.y, e1.x}, r = v2_sub(x, E->q), bt = {v2_dot(E->E1, r), v2_dot(E->E2, r)};
-    double b1 = v2_dot(bt, e1), b2 = v2_dot(bt, e2), lam = 0.0;
+    v2 e2 = {-e1.y, e1.x}, r = prox_v2_sub(x, E->q), bt = {prox_v2_dot(E->E1, r), prox_v2_dot(E->E2, r)};
+    double b1 = prox_v2_dot(bt, e1), b2 = prox_v2_dot(bt, e2), lam = 0.0;
     for (int it = 0; it < 200; ++it) {
         double q1 = b1 / (l1 + lam), q2 = b2 / (l2 + lam), F = q1 * q1 + q2 * q2 - 1.0;
         double dF = -2.0 * (q1 * q1 / (l1 + lam) + q2 * q2 / (l2 + lam));
@@ -815,42 +809,15 @@ static v2 ell_proj(const set2 *E, v2 x)
         if (step <= 1e-17 * (lam + l1)) break;
     }
     v2 z = {b1 / (l1 + lam), b2 / (l2 + lam)}, zz = {z.x * e1.x + z.y * e2.x, z.x * e1.y + z.y * e2.y};
-    double zn = v2_norm(zz);
+    double zn = prox_v2_norm(zz);
     if (zn > 0.0) zz.x /= zn, zz.y /= zn;
     return ell_point(E, zz);
 }
 
-static v2 seg2_closest(v2 a, v2 b, v2 q)
-{
-    v2 e = v2_sub(b, a);
-    double ee = v2_dot(e, e), t = ee > 0.0 ? v2_dot(v2_sub(q, a), e) / ee : 0.0;
-    return v2_mad(a, t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t), e);
-}
-
-static v2 poly2_closest(const set2 *P, v2 q)
-{
-    if (P->nv == 1) return P->v[0];
-    if (P->nv == 2) return seg2_closest(P->v[0], P->v[1], q);
-    int in = 1;
-    for (int i = 0; i < P->nv && in; ++i) in = v2_cross(v2_sub(P->v[(i + 1) % P->nv], P->v[i]), v2_sub(q, P->v[i])) >= 0.0;
-    if (in) return q;
-    v2 best = P->v[0];
-    double bd = INFINITY;
-    for (int i = 0; i < P->nv; ++i) {
-        v2 x = seg2_closest(P->v[i], P->v[(i + 1) % P->nv], q);
-        double d = v2_norm(v2_sub(x, q));
-        if (d < bd) bd = d, best = x;
-    }
-    return best;
-}
+/* Closest point of a polygon set to q (q itself when inside). */
+static v2 poly2_closest(const set2 *P, v2 q) { return prox_v2_poly_closest(P->v, P->nv, q); }
 
 static v2 set2_proj(const set2 *S, v2 x) { return S->ell ? ell_proj(S, x) : poly2_closest(S, x); }
-
-static void pair2_offer(v2 x, v2 y, v2 *bx, v2 *by, double *bd)
-{
-    double d = v2_norm(v2_sub(x, y));
-    if (d < *bd) *bd = d, *bx = x, *by = y;
-}
 
 static int nedges(const set2 *P) { return P->nv == 2 ? 1 : (P->nv >= 3 ? P->nv : 0); }
 
@@ -858,16 +825,16 @@ static int nedges(const set2 *P) { return P->nv == 2 ? 1 : (P->nv >= 3 ? P->nv :
 static void poly2_pair(const set2 *P, const set2 *Q, v2 *x, v2 *y)
 {
     double bd = INFINITY;
-    for (int i = 0; i < P->nv; ++i) pair2_offer(P->v[i], poly2_closest(Q, P->v[i]), x, y, &bd);
-    for (int j = 0; j < Q->nv; ++j) pair2_offer(poly2_closest(P, Q->v[j]), Q->v[j], x, y, &bd);
+    for (int i = 0; i < P->nv; ++i) prox_v2_pair_offer(P->v[i], poly2_closest(Q, P->v[i]), x, y, &bd);
+    for (int j = 0; j < Q->nv; ++j) prox_v2_pair_offer(poly2_closest(P, Q->v[j]), Q->v[j], x, y, &bd);
     for (int i = 0; i < nedges(P); ++i)
         for (int j = 0; j < nedges(Q); ++j) {
             v2 a = P->v[i], b = P->v[(i + 1) % P->nv], c = Q->v[j], d = Q->v[(j + 1) % Q->nv];
-            double d1 = v2_cross(v2_sub(b, a), v2_sub(c, a)), d2 = v2_cross(v2_sub(b, a), v2_sub(d, a));
-            double d3 = v2_cross(v2_sub(d, c), v2_sub(a, c)), d4 = v2_cross(v2_sub(d, c), v2_sub(b, c));
+            double d1 = prox_v2_cross(prox_v2_sub(b, a), prox_v2_sub(c, a)), d2 = prox_v2_cross(prox_v2_sub(b, a), prox_v2_sub(d, a));
+            double d3 = prox_v2_cross(prox_v2_sub(d, c), prox_v2_sub(a, c)), d4 = prox_v2_cross(prox_v2_sub(d, c), prox_v2_sub(b, c));
             if (d1 * d2 < 0.0 && d3 * d4 < 0.0) {
-                v2 z = v2_mad(a, d3 / (d3 - d4), v2_sub(b, a));
-                pair2_offer(z, z, x, y, &bd);
+                v2 z = prox_v2_mad(a, d3 / (d3 - d4), prox_v2_sub(b, a));
+                prox_v2_pair_offer(z, z, x, y, &bd);
             }
         }
 }
@@ -878,15 +845,15 @@ static int poly_ell_common(const set2 *P, const set2 *E, v2 *x)
 {
     v2 o = {0, 0};
     for (int i = 0; i < (P->nv == 1 ? 1 : nedges(P)); ++i) {
-        v2 a = ell_local(E, P->v[i]), b = ell_local(E, P->v[(i + 1) % P->nv]), z = seg2_closest(a, b, o);
-        if (v2_dot(z, z) <= 1.0) {
-            v2 ab = v2_sub(b, a);
-            double ee = v2_dot(ab, ab), t = ee > 0.0 ? v2_dot(v2_sub(z, a), ab) / ee : 0.0;
-            *x = v2_mad(P->v[i], t, v2_sub(P->v[(i + 1) % P->nv], P->v[i]));
+        v2 a = ell_local(E, P->v[i]), b = ell_local(E, P->v[(i + 1) % P->nv]), z = prox_v2_seg_closest(a, b, o);
+        if (prox_v2_dot(z, z) <= 1.0) {
+            v2 ab = prox_v2_sub(b, a);
+            double ee = prox_v2_dot(ab, ab), t = ee > 0.0 ? prox_v2_dot(prox_v2_sub(z, a), ab) / ee : 0.0;
+            *x = prox_v2_mad(P->v[i], t, prox_v2_sub(P->v[(i + 1) % P->nv], P->v[i]));
             return 1;
         }
     }
-    if (P->nv >= 3 && v2_norm(v2_sub(poly2_closest(P, E->q), E->q)) == 0.0) { *x = E->q; return 1; }
+    if (P->nv >= 3 && prox_v2_norm(prox_v2_sub(poly2_closest(P, E->q), E->q)) == 0.0) { *x = E->q; return 1; }
     return 0;
 }
 
@@ -899,14 +866,14 @@ static void set2_pair(const set2 *S, const set2 *T, v2 *x, v2 *y)
     if (!T->ell && poly_ell_common(T, S, x)) { *y = *x; return; }
     if (S->ell && T->ell) {
         v2 zt = ell_local(T, S->q), zs = ell_local(S, T->q);
-        if (v2_dot(zt, zt) <= 1.0) { *x = *y = S->q; return; }
-        if (v2_dot(zs, zs) <= 1.0) { *x = *y = T->q; return; }
+        if (prox_v2_dot(zt, zt) <= 1.0) { *x = *y = S->q; return; }
+        if (prox_v2_dot(zs, zs) <= 1.0) { *x = *y = T->q; return; }
     }
     v2 a = S->ell ? S->q : S->v[0], b = set2_proj(T, a);
-    double scale = v2_norm(a) + v2_norm(b) + 1.0;
+    double scale = prox_v2_norm(a) + prox_v2_norm(b) + 1.0;
     for (int it = 0; it < 400; ++it) {
         v2 an = set2_proj(S, b), bn = set2_proj(T, an);
-        double mv = v2_norm(v2_sub(an, a)) + v2_norm(v2_sub(bn, b));
+        double mv = prox_v2_norm(prox_v2_sub(an, a)) + prox_v2_norm(prox_v2_sub(bn, b));
         a = an, b = bn;
         if (mv <= 1e-17 * scale) break;
     }
@@ -918,14 +885,14 @@ static prox_vec3 lift(const cvx_set *f, const set2 *s, v2 X)
 {
     if (f->ell) {
         v2 z = ell_local(s, X);
-        double zn = v2_norm(z);
+        double zn = prox_v2_norm(z);
         if (zn > 1.0) z.x /= zn, z.y /= zn;
         return prox_v3_mad(prox_v3_mad(f->c, z.x, f->e1), z.y, f->e2);
     }
     if (s->nv == 1) return f->v[s->idx[0]];
     if (s->nv == 2) {
-        v2 e = v2_sub(s->v[1], s->v[0]);
-        double ee = v2_dot(e, e), t = ee > 0.0 ? v2_dot(v2_sub(X, s->v[0]), e) / ee : 0.0;
+        v2 e = prox_v2_sub(s->v[1], s->v[0]);
+        double ee = prox_v2_dot(e, e), t = ee > 0.0 ? prox_v2_dot(prox_v2_sub(X, s->v[0]), e) / ee : 0.0;
         t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
         return prox_v3_mad(f->v[s->idx[0]], t, prox_v3_sub(f->v[s->idx[1]], f->v[s->idx[0]]));
     }
@@ -934,9 +901,9 @@ static prox_vec3 lift(const cvx_set *f, const set2 *s, v2 X)
     int bi = 1;
     for (int i = 1; i + 1 < s->nv; ++i) {
         v2 a = s->v[0], b = s->v[i], c = s->v[i + 1];
-        double den = v2_cross(v2_sub(b, a), v2_sub(c, a));
+        double den = prox_v2_cross(prox_v2_sub(b, a), prox_v2_sub(c, a));
         if (!(fabs(den) > 0.0)) continue;
-        double l1 = v2_cross(v2_sub(X, a), v2_sub(c, a)) / den, l2 = v2_cross(v2_sub(b, a), v2_sub(X, a)) / den, l0 = 1.0 - l1 - l2;
+        double l1 = prox_v2_cross(prox_v2_sub(X, a), prox_v2_sub(c, a)) / den, l2 = prox_v2_cross(prox_v2_sub(b, a), prox_v2_sub(X, a)) / den, l0 = 1.0 - l1 - l2;
         double mn = fmin(l0, fmin(l1, l2));
         if (mn > best) best = mn, bi = i, bl[0] = l0, bl[1] = l1, bl[2] = l2;
     }
@@ -1186,7 +1153,7 @@ static double body_cap(const prox_body *b, prox_vec3 c, double rho)
 static double pl_max(const double *a, const v2 *b, int nj, v2 x)
 {
     double m = -INFINITY;
-    for (int j = 0; j < nj; ++j) m = fmax(m, a[j] + v2_dot(b[j], x));
+    for (int j = 0; j < nj; ++j) m = fmax(m, a[j] + prox_v2_dot(b[j], x));
     return m;
 }
 
@@ -1197,27 +1164,27 @@ static double pl_disk_min(const double *a, const v2 *b, int nj, double r)
 {
     double m = INFINITY;
     for (int j = 0; j < nj; ++j) {
-        double bn = v2_norm(b[j]);
+        double bn = prox_v2_norm(b[j]);
         v2 x = {0, 0};
         if (bn > 0.0) x.x = -b[j].x * r / bn, x.y = -b[j].y * r / bn;
         m = fmin(m, pl_max(a, b, nj, x));
         for (int k = j + 1; k < nj; ++k) {
-            v2 e = v2_sub(b[j], b[k]);
-            double ee = v2_dot(e, e), al = a[j] - a[k];
+            v2 e = prox_v2_sub(b[j], b[k]);
+            double ee = prox_v2_dot(e, e), al = a[j] - a[k];
             if (!(ee > 0.0)) continue;
             v2 x0 = {-al * e.x / ee, -al * e.y / ee};
-            double h2 = r * r - v2_dot(x0, x0);
+            double h2 = r * r - prox_v2_dot(x0, x0);
             if (h2 >= 0.0) {
                 double h = sqrt(h2 / ee);
                 v2 xp = {x0.x - h * e.y, x0.y + h * e.x}, xm = {x0.x + h * e.y, x0.y - h * e.x};
                 m = fmin(m, fmin(pl_max(a, b, nj, xp), pl_max(a, b, nj, xm)));
             }
             for (int l = k + 1; l < nj; ++l) {
-                v2 f = v2_sub(b[j], b[l]);
-                double det = v2_cross(e, f), rl = a[l] - a[j], rk = a[k] - a[j];
+                v2 f = prox_v2_sub(b[j], b[l]);
+                double det = prox_v2_cross(e, f), rl = a[l] - a[j], rk = a[k] - a[j];
                 if (!(fabs(det) > 0.0)) continue;
                 v2 x3 = {(rk * f.y - rl * e.y) / det, (e.x * rl - f.x * rk) / det};
-                if (v2_dot(x3, x3) <= r * r) m = fmin(m, pl_max(a, b, nj, x3));
+                if (prox_v2_dot(x3, x3) <= r * r) m = fmin(m, pl_max(a, b, nj, x3));
             }
         }
     }

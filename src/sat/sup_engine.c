@@ -26,6 +26,7 @@
  * final normal (sup_witnesses), over a few candidate normals (disjoint_witnesses). */
 #include "sup_engine.h"
 
+#include "core/plane2.h"
 #include "core/tol.h"
 
 #include <float.h>
@@ -514,16 +515,8 @@ static prox_vec3 face_proj(const sup_face *f, prox_vec3 x)
 
 /* ---- exact closest pair of two support sets, in the plane perpendicular to n -------------------- */
 
-/* A point of that plane (coordinates along u, v). */
-typedef struct v2 {
-    double x, y;
-} v2;
-
-static v2 v2_sub(v2 a, v2 b) { v2 r = {a.x - b.x, a.y - b.y}; return r; }
-static v2 v2_mad(v2 a, double s, v2 b) { v2 r = {a.x + s * b.x, a.y + s * b.y}; return r; }
-static double v2_dot(v2 a, v2 b) { return a.x * b.x + a.y * b.y; }
-static double v2_cross(v2 a, v2 b) { return a.x * b.y - a.y * b.x; }
-static double v2_norm(v2 a) { return prox_hypot2(a.x, a.y); }
+/* Points of that plane (coordinates along u, v): core/plane2.h. */
+typedef prox_v2 v2;
 
 /* A support set seen along n: a convex polygon of nv vertices in cyclic order (1 a point, 2 a
  * segment, 4 a rectangle) or a disk (centre q, radius R). */
@@ -570,59 +563,25 @@ static set2 face_2d(const frame2 *F, const sup_face *f)
     return s;
 }
 
-/* Closest point of the segment [a, b] to q. */
-static v2 seg2_closest(v2 a, v2 b, v2 q)
-{
-    v2 e = v2_sub(b, a);
-    double ee = v2_dot(e, e), t = ee > 0.0 ? v2_dot(v2_sub(q, a), e) / ee : 0.0;
-    return v2_mad(a, t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t), e);
-}
-
 /* Closest point of a polygon set to q (q itself when inside). */
-static v2 poly2_closest(const set2 *P, v2 q)
-{
-    if (P->nv == 1) return P->v[0];
-    if (P->nv == 2) return seg2_closest(P->v[0], P->v[1], q);
-    int pos = 1, neg = 1;
-    for (int i = 0; i < P->nv; ++i) {
-        double c = v2_cross(v2_sub(P->v[(i + 1) % P->nv], P->v[i]), v2_sub(q, P->v[i]));
-        pos &= c >= 0.0;
-        neg &= c <= 0.0;
-    }
-    if (pos || neg) return q;
-    v2 best = P->v[0];
-    double bd = INFINITY;
-    for (int i = 0; i < P->nv; ++i) {
-        v2 x = seg2_closest(P->v[i], P->v[(i + 1) % P->nv], q);
-        double d = v2_norm(v2_sub(x, q));
-        if (d < bd) bd = d, best = x;
-    }
-    return best;
-}
-
-/* Keeps (x, y) when closer than the best pair so far. */
-static void pair2_offer(v2 x, v2 y, v2 *bx, v2 *by, double *bd)
-{
-    double d = v2_norm(v2_sub(x, y));
-    if (d < *bd) *bd = d, *bx = x, *by = y;
-}
+static v2 poly2_closest(const set2 *P, v2 q) { return prox_v2_poly_closest(P->v, P->nv, q); }
 
 /* Closest pair of two convex polygon sets: a pair of disjoint convex polygons has a closest pair with
  * a vertex of one of them; overlapping ones have a vertex inside the other or two crossing edges. */
 static void poly2_pair(const set2 *P, const set2 *Q, v2 *x, v2 *y)
 {
     double bd = INFINITY;
-    for (int i = 0; i < P->nv; ++i) pair2_offer(P->v[i], poly2_closest(Q, P->v[i]), x, y, &bd);
-    for (int j = 0; j < Q->nv; ++j) pair2_offer(poly2_closest(P, Q->v[j]), Q->v[j], x, y, &bd);
+    for (int i = 0; i < P->nv; ++i) prox_v2_pair_offer(P->v[i], poly2_closest(Q, P->v[i]), x, y, &bd);
+    for (int j = 0; j < Q->nv; ++j) prox_v2_pair_offer(poly2_closest(P, Q->v[j]), Q->v[j], x, y, &bd);
     int ep = P->nv == 2 ? 1 : (P->nv == 4 ? 4 : 0), eq = Q->nv == 2 ? 1 : (Q->nv == 4 ? 4 : 0);
     for (int i = 0; i < ep; ++i)
         for (int j = 0; j < eq; ++j) {
             v2 a = P->v[i], b = P->v[(i + 1) % P->nv], c = Q->v[j], d = Q->v[(j + 1) % Q->nv];
-            double d1 = v2_cross(v2_sub(b, a), v2_sub(c, a)), d2 = v2_cross(v2_sub(b, a), v2_sub(d, a));
-            double d3 = v2_cross(v2_sub(d, c), v2_sub(a, c)), d4 = v2_cross(v2_sub(d, c), v2_sub(b, c));
+            double d1 = prox_v2_cross(prox_v2_sub(b, a), prox_v2_sub(c, a)), d2 = prox_v2_cross(prox_v2_sub(b, a), prox_v2_sub(d, a));
+            double d3 = prox_v2_cross(prox_v2_sub(d, c), prox_v2_sub(a, c)), d4 = prox_v2_cross(prox_v2_sub(d, c), prox_v2_sub(b, c));
             if (d1 * d2 < 0.0 && d3 * d4 < 0.0) { /* proper crossing */
-                v2 z = v2_mad(a, d3 / (d3 - d4), v2_sub(b, a));
-                pair2_offer(z, z, x, y, &bd);
+                v2 z = prox_v2_mad(a, d3 / (d3 - d4), prox_v2_sub(b, a));
+                prox_v2_pair_offer(z, z, x, y, &bd);
             }
         }
 }
@@ -634,20 +593,20 @@ static void set2_pair(const set2 *S, const set2 *T, v2 *x, v2 *y)
 {
     if (!S->disk && !T->disk) { poly2_pair(S, T, x, y); return; }
     if (S->disk && T->disk) {
-        v2 e = v2_sub(T->q, S->q);
-        double L = v2_norm(e);
+        v2 e = prox_v2_sub(T->q, S->q);
+        double L = prox_v2_norm(e);
         if (!(L > 0.0)) { *x = *y = S->q; return; } /* concentric: the common centre */
         /* along the centre line S covers [-R_S, R_S], T covers [L - R_T, L + R_T] */
         double lo = fmax(-S->R, L - T->R), hi = fmin(S->R, L + T->R);
-        if (lo <= hi) { *x = *y = v2_mad(S->q, 0.5 * (lo + hi) / L, e); return; }
-        *x = v2_mad(S->q, S->R / L, e);
-        *y = v2_mad(T->q, -T->R / L, e);
+        if (lo <= hi) { *x = *y = prox_v2_mad(S->q, 0.5 * (lo + hi) / L, e); return; }
+        *x = prox_v2_mad(S->q, S->R / L, e);
+        *y = prox_v2_mad(T->q, -T->R / L, e);
         return;
     }
     const set2 *P = S->disk ? T : S, *D = S->disk ? S : T;
-    v2 p = poly2_closest(P, D->q), dq = v2_sub(p, D->q), d;
-    double l = v2_norm(dq);
-    d = l > D->R ? v2_mad(D->q, D->R / l, dq) : p;
+    v2 p = poly2_closest(P, D->q), dq = prox_v2_sub(p, D->q), d;
+    double l = prox_v2_norm(dq);
+    d = l > D->R ? prox_v2_mad(D->q, D->R / l, dq) : p;
     *x = S->disk ? d : p;
     *y = S->disk ? p : d;
 }
