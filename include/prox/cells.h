@@ -91,6 +91,22 @@ typedef struct prox_window {
     size_t cell;     ///< index of the filling (or lattice) cell; (size_t)-1 for the real world
     size_t expr;     ///< region, in the universe's frame (terms; nexpr = 0: all space)
     size_t nexpr;
+    /* Lattice windows only (the filling cell has LAT); zero elsewhere. The universe fills the element
+     * region only where the element lies in a window of the lattice cell's own universe: the points
+     * it must fill are, in its frame, x with place(x) in element (0,0,0) and place(x) + shift of some
+     * element listed below in such a window (MCNP manual, LAT and FILL: every element is element
+     * (0,0,0) moved by its lattice translation). */
+    size_t nelem;      ///< elements that hold this (universe, placement); 0: every element (FILL=u),
+                       ///< then listed (those that meet the parents' boxes) when bexpr is built
+    long (*elem)[3];   ///< their indices (i, j, k), nelem of them (owned by the model)
+    int nbasis;        ///< lattice translations known: 2 (open along the third axis) or 3; 0: unknown
+    prox_vec3 basis[3]; ///< translation of the elements (1,0,0), (0,1,0), (0,0,1) (lattice cell's frame)
+    double place_o[3], place_R[3][3]; ///< universe frame -> lattice cell's universe frame:
+                                      ///< x' = place_o + place_R x (R[i][j] as TRn's)
+    size_t bexpr, bnexpr; ///< those points as a region in the universe's frame (window_bound.c):
+                          ///< expr AND the union over the elements of the parent windows moved into
+                          ///< the universe's frame; bnexpr 0: not built (a bounded element, planes
+                          ///< that are not lattice pairs, an unbounded parent, too large)
 } prox_window;
 
 /// What the reader could not model, listed once per kind with its count and first line.

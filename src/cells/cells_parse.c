@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "cells/cells_internal.h"
+#include "cells/window_bound.h"
 
 #define CELLS_MAX_NEST 200        /* nesting of parentheses, complements and #n chains */
 #define CELLS_MAX_TERMS (1 << 20) /* terms of one region (complements copy whole regions) */
@@ -1173,8 +1174,9 @@ static int build_cell_now(ctx *c, ccard *cc)
 
 /* ---- windows ------------------------------------------------------------------------------- */
 
-/* Appends a window: the region of cell `ci` mapped by the inverse of `place` (NULL: as is). */
-static void add_window(ctx *c, long u, size_t ci, const prox_deck_tr *place)
+/* Appends a window: the region of cell `ci` mapped by the inverse of `place` (NULL: as is).
+ * Returns its index, or SIZE_MAX when out of memory. */
+static size_t add_window(ctx *c, long u, size_t ci, const prox_deck_tr *place)
 {
     prox_cell_model *m = c->m;
     const prox_cell *cell = &m->cells[ci];
@@ -1189,12 +1191,18 @@ static void add_window(ctx *c, long u, size_t ci, const prox_deck_tr *place)
         }
         push_term(c, term.op, term.sense, term.surf);
     }
-    if (c->nomem) return;
+    if (c->nomem) return SIZE_MAX;
     if (grow((void **)&m->windows, &c->cap_windows, m->nwindows, sizeof *m->windows)) {
         c->nomem = 1;
-        return;
+        return SIZE_MAX;
     }
-    m->windows[m->nwindows++] = (prox_window){u, ci, start, m->nterms - start};
+    prox_window w = {.universe = u, .cell = ci, .expr = start, .nexpr = m->nterms - start};
+    for (int i = 0; i < 3; ++i) {
+        w.place_o[i] = place ? place->o[i] : 0.0;
+        for (int j = 0; j < 3; ++j) w.place_R[i][j] = place ? place->R[i][j] : (double)(i == j);
+    }
+    m->windows[m->nwindows] = w;
+    return m->nwindows++;
 }
 
 static int universe_exists(const ctx *c, long u) { return lmap_get(&c->universes, u) != SIZE_MAX; }
@@ -1205,6 +1213,7 @@ typedef struct fill_seen {
     long u;
     int has;
     prox_deck_tr t;
+    size_t win; /* its window (SIZE_MAX: none) */
 } fill_seen;
 
 typedef struct seen_list {
@@ -1212,8 +1221,8 @@ typedef struct seen_list {
     size_t n, cap;
 } seen_list;
 
-static void window_for(ctx *c, ccard *cc, long u, const prox_deck_tr *trcl, const prox_deck_tr *ft, seen_list *sl,
-                       int line)
+static size_t window_for(ctx *c, ccard *cc, long u, const prox_deck_tr *trcl, const prox_deck_tr *ft, seen_list *sl,
+                         int line)
 {
     prox_deck_tr place;
     const prox_deck_tr *pl = NULL;
@@ -1224,22 +1233,40 @@ static void window_for(ctx *c, ccard *cc, long u, const prox_deck_tr *trcl, cons
         const fill_seen *f = &sl->v[i];
         if (f->u == u && f->has == (pl != NULL) &&
             (!pl || (!memcmp(f->t.o, pl->o, sizeof pl->o) && !memcmp(f->t.R, pl->R, sizeof pl->R))))
-            return;
+            return f->win;
     }
     if (grow((void **)&sl->v, &sl->cap, sl->n, sizeof *sl->v)) {
         c->nomem = 1;
-        return;
+        return SIZE_MAX;
     }
-    sl->v[sl->n++] = (fill_seen){u, pl != NULL, pl ? *pl : (prox_deck_tr){0}};
+    fill_seen *f = &sl->v[sl->n++];
+    *f = (fill_seen){u, pl != NULL, pl ? *pl : (prox_deck_tr){0}, SIZE_MAX};
     if (!universe_exists(c, u)) {
         add_error(c, line, "cell %ld: FILL names universe %ld, which has no cells", cc->number, u);
-        return;
+        return SIZE_MAX;
     }
     if (u == c->m->cells[cc->cell].universe) {
         add_error(c, line, "cell %ld: fills its own universe %ld", cc->number, u);
-        return;
+        return SIZE_MAX;
     }
-    add_window(c, u, cc->cell, pl);
+    return f->win = add_window(c, u, cc->cell, pl);
+}
+
+/* Records that lattice element (i, j, k) holds window w (elements of a FILL array). */
+static void add_element(ctx *c, size_t w, const long ijk[3])
+{
+    if (w == SIZE_MAX) return;
+    prox_window *x = &c->m->windows[w];
+    size_t n = x->nelem;
+    if ((n & (n - 1)) == 0) { /* 0 or a power of two: double the room */
+        void *p = realloc(x->elem, (n ? 2 * n : 1) * sizeof *x->elem);
+        if (!p) {
+            c->nomem = 1;
+            return;
+        }
+        x->elem = p;
+    }
+    memcpy(x->elem[x->nelem++], ijk, sizeof x->elem[0]);
 }
 
 /* What the windows of one filled cell are built from. */
@@ -1271,6 +1298,7 @@ static void fill_single(fill_job *j)
     }
     j->cell->fill = u;
     if (u) window_for(j->c, j->cc, u, j->trcl, has_ft ? &ft : NULL, &j->seen, j->fill->line);
+    /* On a lattice every element holds u: the window lists no element (nelem 0). */
 }
 
 /* Reads the index range "lo:hi" of token t. 0 on success. */
@@ -1285,17 +1313,27 @@ static int index_range(const char *t, long *lo, long *hi)
     return labs(*lo) > CELLS_MAX_INDEX || labs(*hi) > CELLS_MAX_INDEX ? -1 : 0;
 }
 
+/* Element number `at` of a fill array (i fastest, then j, then k) holds window w. */
+static void element_at(ctx *c, size_t w, size_t at, const long lo[3], const long n[3])
+{
+    size_t ni = (size_t)n[0], nj = (size_t)n[1];
+    long ijk[3] = {lo[0] + (long)(at % ni), lo[1] + (long)(at / ni % nj), lo[2] + (long)(at / (ni * nj))};
+    add_element(c, w, ijk);
+}
+
 /* Lattice fill array: i1:i2 j1:j2 k1:k2, then one entry per element, each optionally followed by a
  * transform in parentheses; nR repeats the previous entry. An entry 0 or equal to the lattice's own
  * universe fills no universe (the element holds the lattice cell's material). */
 static void fill_array(fill_job *j)
 {
     char **v = j->fill->val;
-    size_t nv = j->fill->nval, want = 1, got = 0, i;
+    size_t nv = j->fill->nval, want = 1, got = 0, i, prev = SIZE_MAX;
+    long lo[3], n[3];
     for (int d = 0; d < 3; ++d) {
-        long lo, hi;
-        if (d >= (int)nv || index_range(v[d], &lo, &hi)) goto bad;
-        want *= (size_t)(hi - lo + 1);
+        long hi;
+        if (d >= (int)nv || index_range(v[d], &lo[d], &hi)) goto bad;
+        n[d] = hi - lo[d] + 1;
+        want *= (size_t)n[d];
     }
     if (!j->cell->lat) {
         add_error(j->c, j->fill->line, "cell %ld: a FILL array needs LAT", j->cc->number);
@@ -1309,16 +1347,22 @@ static void fill_array(fill_job *j)
             char buf[24];
             snprintf(buf, sizeof buf, "%.*s", (int)(L - 1), v[i]);
             if (prox_deck_long(buf, &cnt) || cnt < 1) goto bad;
-            got += (size_t)cnt, ++i;
+            if ((size_t)cnt > want - (got < want ? got : want)) /* too many: reported below */
+                got += (size_t)cnt;
+            else
+                for (long r = 0; r < cnt; ++r) element_at(j->c, prev, got++, lo, n);
+            ++i;
             continue;
         }
         if (prox_deck_long(v[i++], &u)) goto bad;
         prox_deck_tr ft;
         int has_ft = 0;
         if (read_transform(j->c, v, nv, &i, j->fill->star, &ft, &has_ft, j->fill->line, j->cc->number, "FILL")) return;
-        ++got, have_prev = 1;
+        have_prev = 1, prev = SIZE_MAX;
         if (u != 0 && u != j->cell->universe)
-            window_for(j->c, j->cc, u, j->trcl, has_ft ? &ft : NULL, &j->seen, j->fill->line);
+            prev = window_for(j->c, j->cc, u, j->trcl, has_ft ? &ft : NULL, &j->seen, j->fill->line);
+        if (got < want) element_at(j->c, prev, got, lo, n);
+        ++got;
     }
     if (got != want)
         add_error(j->c, j->fill->line, "cell %ld: FILL array has %zu entries for %zu elements", j->cc->number, got, want);
@@ -1418,7 +1462,8 @@ static void make_windows(ctx *c)
         c->nomem = 1;
         return;
     }
-    m->windows[m->nwindows++] = (prox_window){0, (size_t)-1, 0, 0};
+    m->windows[m->nwindows++] =
+        (prox_window){.universe = 0, .cell = (size_t)-1, .place_R = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
     for (size_t i = 0; i < c->ncc && !c->nomem; ++i)
         if (c->cc[i].state == 2) {
             c->cur = c->cc[i].card;
@@ -1454,6 +1499,7 @@ static prox_status finish(ctx *c)
     for (size_t i = 0; i < c->ncc && !c->nomem; ++i) build_cell(c, &c->cc[i]);
     order_cells(c);
     if (!c->nomem) make_windows(c);
+    if (!c->nomem && cells_bound_windows(c->m) != PROX_OK) c->nomem = 1; /* window_bound.c */
     ctx_free(c);
     if (c->nomem) {
         prox_cells_free(c->m);
@@ -1492,6 +1538,7 @@ PROX_API void prox_cells_free(prox_cell_model *m)
     free(m->surfs);
     free(m->terms);
     free(m->cells);
+    for (size_t i = 0; i < m->nwindows; ++i) free(m->windows[i].elem);
     free(m->windows);
     free(m->errors);
     free(m->unchecked);

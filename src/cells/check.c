@@ -20,6 +20,7 @@
 #include <unistd.h>
 
 #include "cells/check_internal.h"
+#include "cells/window_bound.h"
 #include "core/tol.h"
 
 static const uint64_t var_mask[PROX_CC_VARS] = {0xAAAAAAAAAAAAAAAAull, 0xCCCCCCCCCCCCCCCCull, 0xF0F0F0F0F0F0F0F0ull,
@@ -199,7 +200,9 @@ static prox_status prep_build(prox_ccprep *P, const prox_cell_model *m)
         P->ucells[i] = i;
     }
     for (size_t i = 0; i < m->nwindows; ++i)
-        if (!build_expr(P, m->windows[i].expr, m->windows[i].nexpr, stack)) goto done;
+        if (!build_expr(P, m->windows[i].expr, m->windows[i].nexpr, stack) ||
+            !build_expr(P, m->windows[i].bexpr, m->windows[i].bnexpr, stack))
+            goto done;
     pthread_mutex_lock(&sort_lock);
     sort_model = m;
     qsort(P->ucells, m->ncells, sizeof *P->ucells, by_universe);
@@ -264,6 +267,7 @@ typedef struct winfo {
     size_t win;
     prox_ccbox dom;       /* empty: not checked */
     const char *why;      /* why not checked */
+    int bounded;          /* a lattice element open along an axis, checked where its parent holds it */
 } winfo;
 
 /* A box holding the complement of the region of term i (De Morgan over the tree). */
@@ -327,7 +331,16 @@ static void window_domain(prox_ccctx *c, winfo *w)
         for (int i = 0; i < 3; ++i) w->dom.lo[i] -= pad, w->dom.hi[i] += pad;
         return;
     }
+    const prox_term *last = &P->m->terms[w->expr + w->nexpr - 1];
+    if (w->bounded && w->nexpr == 2 && last->op == PROX_OP_NOT && P->m->terms[w->expr].op == PROX_OP_ALL) {
+        w->dom = prox_ccbox_empty(); /* no element that holds the universe meets its parent: nothing to fill */
+        return;
+    }
     prox_ccbox b = P->nbox[w->expr + w->nexpr - 1];
+    if (!prox_ccbox_is_empty(&b) && !prox_ccbox_bounded(&b)) { /* tilted planes may bound it */
+        prox_ccbox t = cells_region_box(P->m, w->expr, w->nexpr);
+        b = prox_ccbox_and(&b, &t);
+    }
     if (!prox_ccbox_is_empty(&b) && !prox_ccbox_bounded(&b)) {
         prox_ccbox h = bounded_hull(P, w->u0, w->nu, 0);
         if (prox_ccbox_is_empty(&h)) {
@@ -435,6 +448,15 @@ static prox_status run_pool(pool *p, int threads, int progress, double t0)
 
 /* ---- entry point ---- */
 
+/* A lattice window whose element is open along an axis is checked as its bexpr (cells.h): the element
+ * where a window of the lattice's universe holds it. A bounded element is checked whole. */
+static int uses_bound(const prox_ccprep *P, const prox_window *x)
+{
+    if (!x->bnexpr || !x->nexpr) return 0;
+    const prox_ccbox *b = &P->nbox[x->expr + x->nexpr - 1];
+    return !prox_ccbox_is_empty(b) && !prox_ccbox_bounded(b);
+}
+
 /* Windows of the model (a real-world window made up when the model lists none). */
 static winfo *list_windows(const prox_ccprep *P, size_t *nw)
 {
@@ -447,6 +469,7 @@ static winfo *list_windows(const prox_ccprep *P, size_t *nw)
             const prox_window *x = &m->windows[i];
             w[i] = (winfo){.universe = x->universe, .expr = x->expr, .nexpr = x->nexpr, .win = i,
                            .window_cell = x->cell < m->ncells ? m->cells[x->cell].number : 0};
+            if (uses_bound(P, x)) w[i].expr = x->bexpr, w[i].nexpr = x->bnexpr, w[i].bounded = 1;
         } else w[i] = (winfo){.universe = 0, .win = (size_t)-1};
         universe_cells(P, w[i].universe, &w[i].u0, &w[i].nu);
     }
@@ -501,6 +524,102 @@ static void skip_repeated_windows(const prox_ccprep *P, winfo *w, size_t nw, int
         for (size_t j = 0; j < k && !skip[k]; ++j) skip[k] = !skip[j] && same_window(P, &w[j], &w[k]);
 }
 
+/* ---- witnesses of windows bounded by their parent ---- */
+
+static const char *const reason_parent =
+    "witness not confirmed in the parent window: no lattice element that holds the universe maps it into "
+    "a window of the lattice cell's universe";
+
+static int in_window_exact(const prox_cell_model *m, size_t wi, prox_vec3 x, int depth);
+
+/* 1 when x (universe frame) lies in lattice window wi: in its element (0,0,0) and, mapped by the
+ * placement and the translation of one of its elements, in a window of the lattice cell's universe
+ * (exact membership at every step, independent of the window's bexpr). */
+static int in_lattice_window(const prox_cell_model *m, size_t wi, prox_vec3 x, int depth)
+{
+    const prox_window *w = &m->windows[wi];
+    if (prox_region_contains(m, w->expr, w->nexpr, x) != 1) return 0;
+    const double xx[3] = {x.x, x.y, x.z};
+    double y[3];
+    for (int i = 0; i < 3; ++i)
+        y[i] = w->place_o[i] + w->place_R[i][0] * xx[0] + w->place_R[i][1] * xx[1] + w->place_R[i][2] * xx[2];
+    long U = m->cells[w->cell].universe;
+    for (size_t k = 0; k < w->nelem; ++k) {
+        prox_vec3 z = prox_v3(y[0], y[1], y[2]);
+        for (int c = 0; c < w->nbasis; ++c) z = prox_v3_add(z, prox_v3_scale(w->basis[c], (double)w->elem[k][c]));
+        for (size_t p = 0; p < m->nwindows; ++p)
+            if (m->windows[p].universe == U && in_window_exact(m, p, z, depth + 1)) return 1;
+    }
+    return 0;
+}
+
+static int in_window_exact(const prox_cell_model *m, size_t wi, prox_vec3 x, int depth)
+{
+    const prox_window *w = &m->windows[wi];
+    if (depth > 32) return 0;
+    if (w->bnexpr && w->nbasis && w->cell < m->ncells && m->cells[w->cell].lat)
+        return in_lattice_window(m, wi, x, depth);
+    return !w->nexpr || prox_region_contains(m, w->expr, w->nexpr, x) == 1;
+}
+
+/* 1 when x lies in a window of universe u (window cell number `cell`, 0: any) as it was checked. */
+static int witness_in_windows(const prox_ccprep *P, const winfo *w, size_t nw, long u, long cell, prox_vec3 x)
+{
+    for (size_t k = 0; k < nw; ++k) {
+        if (w[k].universe != u || (cell && w[k].window_cell != cell) || w[k].win == (size_t)-1) continue;
+        if (w[k].bounded ? in_lattice_window(P->m, w[k].win, x, 0)
+                         : prox_region_contains(P->m, w[k].expr, w[k].nexpr, x) == 1)
+            return 1;
+    }
+    return 0;
+}
+
+static int add_undecided(prox_cells_report *r, prox_cells_undecided u)
+{
+    prox_cells_undecided *v = realloc(r->undecided, (r->nundecided + 1) * sizeof *v);
+    if (!v) return 0;
+    r->undecided = v;
+    r->undecided[r->nundecided++] = u;
+    return 1;
+}
+
+/* A window bounded by its parent is checked as a region built from surfaces moved by the lattice
+ * translations; every finding of its universe is confirmed once more by mapping the witness back
+ * through an element's translation into the parent's own window. A witness that does not map back
+ * becomes undecided (never a finding, never dropped). */
+static prox_status confirm_bounded(const prox_ccprep *P, const winfo *w, size_t nw, prox_cells_report *r)
+{
+    size_t keep = 0;
+    for (size_t i = 0; i < r->noverlaps; ++i) {
+        prox_cells_overlap o = r->overlaps[i];
+        int any = 0;
+        for (size_t k = 0; k < nw && !any; ++k) any = w[k].bounded && w[k].universe == o.universe;
+        if (!any || witness_in_windows(P, w, nw, o.universe, 0, o.point)) {
+            r->overlaps[keep++] = o;
+            continue;
+        }
+        prox_cells_undecided u = {.universe = o.universe, .cells = {o.cells[0], o.cells[1]}, .ncells = 2, .lo = o.point,
+                                  .hi = o.point, .nboxes = 1, .volume = o.volume_min, .reason = reason_parent};
+        if (!add_undecided(r, u)) return PROX_ENOMEM;
+    }
+    r->noverlaps = keep;
+    keep = 0;
+    for (size_t i = 0; i < r->ngaps; ++i) {
+        prox_cells_gap g = r->gaps[i];
+        int any = 0;
+        for (size_t k = 0; k < nw && !any; ++k) any = w[k].bounded && w[k].universe == g.universe;
+        if (!any || witness_in_windows(P, w, nw, g.universe, g.window_cell, g.point)) {
+            r->gaps[keep++] = g;
+            continue;
+        }
+        prox_cells_undecided u = {.universe = g.universe, .lo = g.point, .hi = g.point, .nboxes = 1,
+                                  .volume = g.volume_min, .reason = reason_parent};
+        if (!add_undecided(r, u)) return PROX_ENOMEM;
+    }
+    r->ngaps = keep;
+    return PROX_OK;
+}
+
 static prox_status check_run(prox_ccprep *P, const prox_cells_check_opts *o, prox_cells_report *r, double t0)
 {
     size_t nw = 0;
@@ -550,6 +669,7 @@ static prox_status check_run(prox_ccprep *P, const prox_cells_check_opts *o, pro
         pool p = {.P = P, .tasks = tasks, .outs = outs, .ntasks = ntasks};
         st = run_pool(&p, o ? o->threads : 0, o ? o->progress : 0, t0);
         if (st == PROX_OK) st = prox_cc_merge(P, tasks, outs, ntasks, r);
+        if (st == PROX_OK) st = confirm_bounded(P, w, nw, r);
     }
     /* Windows that could not be boxed are undecided as a whole. */
     for (size_t k = 0; k < nw && st == PROX_OK; ++k) {
