@@ -116,6 +116,15 @@ typedef struct prox_signed_result {
     prox_vec3 normal;   ///< unit direction from A towards B: moving B by -sd*normal (sd < 0) separates
     prox_vec3 p1;       ///< witness in A
     prox_vec3 p2;       ///< witness in B; p2 - p1 = sd * normal
+    /* What is proved about sd: an enclosure sd_lower <= sd* <= sd_upper of the true signed distance
+     * sd*, from the support functions at the answer's normal and the answer's own proof. */
+    double sd_lower;    ///< gap of the projections along normal, -h_A(n) - h_B(-n) (weak duality: a
+                        ///< lower bound for every unit n), less its rounding
+    double sd_upper;    ///< disjoint: |p2 - p1| with p1 in A and p2 in B, plus their rounding;
+                        ///< overlapping: sd (plus rounding) when the method proved the depth (every
+                        ///< deciding feature enumerated, or the directions covered), else 0 (a common point)
+    int certified;      ///< 1 when sd_upper - sd_lower is within the accuracy bar: 1e-12 x scale
+                        ///< (PROX_TOL_TOUCH) when disjoint, 1e-9 x scale (PROX_TOL_DEPTH_BAR) when overlapping
 } prox_signed_result;
 
 /// Result of a containment query: is A inside B (closed sets)?

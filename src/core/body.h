@@ -14,6 +14,8 @@
 #include "core/curved.h"
 #include "core/cyl.h"
 #include "core/polytope.h"
+#include "core/tol.h"
+#include "prox/result.h"
 #include "prox/shapes.h"
 
 /* CYL, BOX and SPH are centrally symmetric about c (hc even); the macrobodies added after them are
@@ -115,5 +117,24 @@ prox_vec3 prox_body_closest(const prox_body *b, prox_vec3 x);
 /* Signed distance from x to the body's boundary (< 0 inside) and the closest boundary point *q,
  * absolute coordinates: the exact sphere-against-anything query is this minus the radius. */
 double prox_body_boundary(const prox_body *b, prox_vec3 x, prox_vec3 *q);
+
+/* Sets the proved enclosure of a signed answer (r->sd_lower, sd_upper, certified; result.h) for A and
+ * B given as bodies. On entry r->certified = 1 says the method proved its depth (overlapping pairs),
+ * a negative r->sd_upper is the method's own proved bound when it has one (a covering), and a positive
+ * r->sd_lower of a disjoint answer is the method's duality certificate (certificate_gap). */
+void prox_body_signed_bounds(const prox_body *a, const prox_body *b, prox_signed_result *r);
+/* The enclosure of a closed-form answer (a sphere against anything: the exact point distance, whose
+ * gap along its normal and whose witnesses' separation are sd itself): sd within its rounding,
+ * PROX_TOL_BOUND x the scale of the quantities it was computed from; certified. */
+static inline void prox_signed_closed_form(prox_signed_result *r, double scale)
+{
+    double err = 2.0 * PROX_TOL_BOUND * scale;
+    r->sd_lower = r->sd - err;
+    r->sd_upper = r->sd > 0.0 ? r->sd + err : fmin(r->sd + err, 0.0);
+    r->certified = 1;
+}
+
+/* The same for two valid shapes. */
+void prox_shape_signed_bounds(const prox_shape *a, const prox_shape *b, prox_signed_result *r);
 
 #endif

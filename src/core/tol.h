@@ -179,6 +179,10 @@
  * found, ten times inside the 1e-9 S the depths promise. */
 #define PROX_TOL_DEPTH_CERT 1e-10
 
+/* The accuracy bar of penetration depths (1e-9 S): an overlapping signed distance whose proved
+ * enclosure (prox_signed_result.sd_lower, sd_upper) is this narrow is reported certified. */
+#define PROX_TOL_DEPTH_BAR 1e-9
+
 /* A Newton bracket on an angle narrower than PROX_TOL_ANGLE rad is at the rounding of the angle. */
 #define PROX_TOL_ANGLE 1e-14
 
@@ -265,5 +269,13 @@
  * most ~1e-13 S, and the distance and signed distance, being 1-Lipschitz under such moves, by no
  * more: well inside the 1e-12 S the answers promise. */
 #define PROX_TOL_COAXIAL_REV 1e-13
+
+/* Lattice translations (src/cells/window_bound.c): the two planes of a pair of a lattice element are
+ * opposite when their unit normals sum to within PROX_TOL_LAT_PLANES, and a hexagonal element's third
+ * pair agrees with the first two (element (-1,1,0) beyond its fifth surface) within PROX_TOL_LAT_PLANES
+ * x the element's width. Lattice cards give their planes to a few digits, the same plane pairs
+ * in both senses: a looser agreement is not a lattice prox can translate, and its windows stay as they
+ * were (not bounded: undecided). */
+#define PROX_TOL_LAT_PLANES 1e-9
 
 #endif

@@ -671,7 +671,11 @@ PROX_API prox_signed_result prox_box_box_signed_distance(const prox_box *a, cons
     r.status = prox_valid2(prox_box_validate(a), prox_box_validate(b));
     if (r.status != PROX_OK) return r;
     prox_bframe A = prox_bframe_make(a), B = prox_bframe_make(b);
-    return prox_box_pair_signed(&A, &B);
+    r = prox_box_pair_signed(&A, &B);
+    r.certified = 1; /* the 15 axes examined */
+    prox_shape sa = prox_shape_from_box(*a), sb = prox_shape_from_box(*b);
+    prox_shape_signed_bounds(&sa, &sb, &r);
+    return r;
 }
 
 static prox_signed_result unit_signed(const prox_bframe *pA, const prox_bframe *pB);
@@ -683,6 +687,7 @@ prox_signed_result prox_box_pair_signed(const prox_bframe *pA, const prox_bframe
     unit_pair(pA, pB, &A, &B, &u);
     prox_signed_result r = unit_signed(&A, &B);
     r.sd /= u;
+    r.sd_lower /= u;
     r.p1 = unit_back(r.p1, u, pA->m);
     r.p2 = unit_back(r.p2, u, pA->m);
     return r;

@@ -4,6 +4,7 @@
 #define PROX_DISTANCE_BOX_INTERNAL_H
 
 #include "core/box.h"
+#include "core/body.h"
 #include "core/cyl.h"
 #include "prox/distance.h"
 #include "prox/pairs.h"
@@ -18,6 +19,7 @@ static inline prox_signed_result prox_signed_from_disjoint(const prox_distance_r
     r.normal = prox_v3_divs(prox_v3_sub(d->p2, d->p1), d->distance);
     r.p1 = d->p1;
     r.p2 = d->p2;
+    r.sd_lower = d->certified ? d->certificate_gap : 0.0; /* the duality certificate, if any */
     return r;
 }
 

@@ -15,7 +15,9 @@ PROX_API prox_signed_result prox_box_sph_signed_distance(const prox_box *a, cons
     prox_vec3 q, n;
     double sdp = prox_bframe_signed(&f, b->center, &q, &n);
     if (!(prox_v3_norm2(n) > 0.0)) n = f.a[2]; /* centre on the surface: a face normal is valid */
-    return prox_sph_signed_from_point(sdp, q, n, b);
+    r = prox_sph_signed_from_point(sdp, q, n, b);
+    prox_signed_closed_form(&r, fabs(sdp) + 2.0 * b->radius + prox_bframe_size(&f)); /* the exact point distance */
+    return r;
 }
 
 PROX_API prox_distance_result prox_box_sph_distance(const prox_box *a, const prox_sph *b)

@@ -672,12 +672,14 @@ prox_signed_result prox_poly_signed(const prox_polytope *a, prox_vec3 ca, const 
         r.normal = prox_v3_scale(prox_v3_sub(d.p2, d.p1), 1.0 / d.distance);
         r.p1 = d.p1;
         r.p2 = d.p2;
+        r.sd_lower = d.certified ? d.certificate_gap : 0.0;
     } else if (s > 0.0) {
         if (!certified(&A, &B, X.ax[X.best], S, 3, &d)) disjoint_distance(&A, &B, X.ax[X.best], S, &d);
         r.sd = d.distance;
         r.normal = prox_v3_scale(prox_v3_sub(d.p2, d.p1), 1.0 / d.distance);
         r.p1 = d.p1;
         r.p2 = d.p2;
+        r.sd_lower = d.certified ? d.certificate_gap : 0.0;
     } else {
         /* The depth axis: among the axes within a touch of the largest separation, face normals
          * first, the first whose support features meet in projection. */
@@ -697,6 +699,7 @@ prox_signed_result prox_poly_signed(const prox_polytope *a, prox_vec3 ca, const 
         }
     }
     r.sd /= u;
+    r.sd_lower /= u;
     r.p1 = unplace(r.p1, u, ca);
     r.p2 = unplace(r.p2, u, ca);
     return r;

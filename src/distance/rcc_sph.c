@@ -13,7 +13,9 @@ PROX_API prox_signed_result prox_rcc_sph_signed_distance(const prox_rcc *a, cons
     prox_cyl k = prox_cyl_make(a, prox_v3(0, 0, 0));
     prox_vec3 q, n;
     double sdp = prox_cyl_signed(&k, b->center, &q, &n);
-    return prox_sph_signed_from_point(sdp, q, n, b);
+    r = prox_sph_signed_from_point(sdp, q, n, b);
+    prox_signed_closed_form(&r, fabs(sdp) + 2.0 * b->radius + k.h + 2.0 * k.r); /* the exact point distance */
+    return r;
 }
 
 PROX_API prox_distance_result prox_rcc_sph_distance(const prox_rcc *a, const prox_sph *b)

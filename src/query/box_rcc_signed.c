@@ -1,12 +1,25 @@
 /* BOX-RCC signed distance: the exact distance of src/distance when the solids are disjoint, the
  * penetration depth of src/sat (closed-form enumeration of the strata) when they overlap. It composes the two
  * modules, hence lives here and not in either of them. */
+#include "core/body.h"
 #include "core/box.h"
 #include "prox/pairs.h"
 #include "prox/support.h"
 #include "sat/sat_internal.h"
 
+static prox_signed_result box_rcc_signed(const prox_box *a, const prox_rcc *b);
+
+/* The answer with its proved enclosure (core/signed_bounds.c). */
 PROX_API prox_signed_result prox_box_rcc_signed_distance(const prox_box *a, const prox_rcc *b)
+{
+    prox_signed_result r = box_rcc_signed(a, b);
+    if (r.status != PROX_OK) return r;
+    prox_shape sa = prox_shape_from_box(*a), sb = prox_shape_from_rcc(*b);
+    prox_shape_signed_bounds(&sa, &sb, &r);
+    return r;
+}
+
+static prox_signed_result box_rcc_signed(const prox_box *a, const prox_rcc *b)
 {
     prox_signed_result r = {0};
     prox_distance_result d = prox_box_rcc_distance(a, b);
@@ -17,6 +30,7 @@ PROX_API prox_signed_result prox_box_rcc_signed_distance(const prox_box *a, cons
         r.normal = prox_v3_divs(prox_v3_sub(d.p2, d.p1), d.distance);
         r.p1 = d.p1;
         r.p2 = d.p2;
+    r.sd_lower = d.certified ? d.certificate_gap : 0.0; /* the duality certificate */
         return r;
     }
     /* overlapping: minimum of h_A(D) + h_B(-D) over unit D, every stratum enumerated in closed

@@ -215,7 +215,10 @@ static prox_signed_result poly_signed(const prox_shape *a, const prox_shape *b)
     prox_polytope pa, pb;
     prox_vec3 ca, cb;
     polys(a, b, &pa, &ca, &pb, &cb);
-    return prox_poly_signed(&pa, ca, &pb, cb);
+    prox_signed_result r = prox_poly_signed(&pa, ca, &pb, cb);
+    r.certified = 1; /* every separating axis of the two polytopes examined */
+    prox_shape_signed_bounds(a, b, &r);
+    return r;
 }
 
 /* Coaxial solids of revolution (RCC, TRC, ELL, SPH on one axis) have a whole circle of optimal
@@ -234,14 +237,24 @@ static prox_distance_result convex_distance(const prox_shape *a, const prox_shap
  * more than PROX_TOL_WITNESS_DIR S apart (its rounding then below 1e-12 rad). */
 static prox_signed_result convex_signed(const prox_shape *a, const prox_shape *b)
 {
-    if (prox_coaxial_pair(a, b)) return prox_coaxial_signed_distance(a, b);
     prox_body ba = prox_body_make(a), bb = prox_body_make(b);
-    prox_signed_result s = prox_convex_signed(&ba, &bb);
+    if (prox_coaxial_pair(a, b)) {
+        prox_signed_result c = prox_coaxial_signed_distance(a, b);
+        c.certified = 1; /* the closed forms of the meridian sections */
+        prox_body_signed_bounds(&ba, &bb, &c);
+        return c;
+    }
+    prox_convex_info info;
+    prox_signed_result s = prox_convex_signed_ex(&ba, &bb, &info);
+    if (s.status == PROX_OK && s.sd <= 0.0 && info.intersect && info.certified) /* the cover's proof */
+        s.certified = 1, s.sd_upper = -info.lower;
+    if (s.status == PROX_OK && s.sd > 0.0) s.sd_lower = info.lower; /* the duality bound */
     if (s.status == PROX_OK && s.sd > 0.0) {
         prox_vec3 v = prox_v3_sub(s.p2, s.p1);
         double len = prox_v3_norm(v), S = fmax(prox_v3_dist(ba.c, bb.c), fmax(ba.size, bb.size));
         if (len > PROX_TOL_WITNESS_DIR * S) s.normal = prox_v3_scale(v, 1.0 / len);
     }
+    prox_body_signed_bounds(&ba, &bb, &s);
     return s;
 }
 
@@ -284,13 +297,20 @@ PROX_API prox_distance_result prox_shape_distance(const prox_shape *a, const pro
     return route_of(a->kind, b->kind) == ROUTE_POLY ? poly_distance(a, b) : convex_distance(a, b);
 }
 
+/* A sphere s against any shape b: the exact point-to-body distance (closed form, its enclosure set by
+ * prox_query_sph_signed). */
+static prox_signed_result sph_signed(const prox_shape *b, const prox_shape *s, int sphere_first)
+{
+    return prox_query_sph_signed(b, &s->u.sph, sphere_first);
+}
+
 PROX_API prox_signed_result prox_shape_signed_distance(const prox_shape *a, const prox_shape *b)
 {
     prox_signed_result r = {0};
     if ((r.status = check_kinds(a, b)) != PROX_OK) return r;
     switch (route_of(a->kind, b->kind)) {
-    case ROUTE_SPH_B: return prox_query_sph_signed(a, &b->u.sph, 0);
-    case ROUTE_SPH_A: return mirror_s(prox_query_sph_signed(b, &a->u.sph, 1));
+    case ROUTE_SPH_B: return sph_signed(a, b, 0);
+    case ROUTE_SPH_A: return mirror_s(sph_signed(b, a, 1));
     case ROUTE_OLD: {
         norm_shape na, nb;
         if ((r.status = normalise2(a, b, &na, &nb)) != PROX_OK) return r;

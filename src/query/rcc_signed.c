@@ -32,7 +32,19 @@ static void polish_disjoint(const prox_rcc *a, const prox_rcc *b, double d, prox
     *p2 = prox_v3_add(y, o);
 }
 
+static prox_signed_result rcc_signed(const prox_rcc *a, const prox_rcc *b);
+
+/* The answer with its proved enclosure (core/signed_bounds.c). */
 PROX_API prox_signed_result prox_rcc_signed_distance(const prox_rcc *a, const prox_rcc *b)
+{
+    prox_signed_result r = rcc_signed(a, b);
+    if (r.status != PROX_OK) return r;
+    prox_shape sa = prox_shape_from_rcc(*a), sb = prox_shape_from_rcc(*b);
+    prox_shape_signed_bounds(&sa, &sb, &r);
+    return r;
+}
+
+static prox_signed_result rcc_signed(const prox_rcc *a, const prox_rcc *b)
 {
     prox_signed_result r = {0};
     prox_distance_result d = prox_rcc_distance(a, b); /* validates both */
@@ -45,6 +57,7 @@ PROX_API prox_signed_result prox_rcc_signed_distance(const prox_rcc *a, const pr
     r.sd = d.distance;
     r.p1 = d.p1;
     r.p2 = d.p2;
+    r.sd_lower = d.certified ? d.certificate_gap : 0.0; /* the duality certificate */
     if (fabs(prox_v3_dist(d.p1, d.p2) - d.distance) > 0.0) polish_disjoint(a, b, d.distance, &r.p1, &r.p2);
     /* (p2 - p1) / |p2 - p1| is the normal: it makes p2 - p1 = sd n hold to the points' rounding. Its
      * direction carries that rounding, eps |p| / distance, so very near touching it is a supporting

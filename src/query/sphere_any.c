@@ -174,7 +174,7 @@ prox_signed_result prox_query_sph_signed(const prox_shape *b, const prox_sph *s,
     prox_signed_result r;
     prox_status st;
     prox_vec3 q, n;
-    double sdp, h2 = 0.0;
+    double sdp, h2 = 0.0, size;
     if (b->kind == PROX_SHAPE_RCC || b->kind == PROX_SHAPE_BOX) { /* the commonest pairs: no switch */
         prox_status sb = b->kind == PROX_SHAPE_RCC ? prox_rcc_validate_h2(&b->u.rcc, &h2) : box_validate_fast(&b->u.box);
         prox_status ss = prox_sph_validate(s);
@@ -190,20 +190,24 @@ prox_signed_result prox_query_sph_signed(const prox_shape *b, const prox_sph *s,
     if (b->kind == PROX_SHAPE_RCC) {
         prox_cyl k = prox_cyl_make_h(&b->u.rcc, sqrt(h2), prox_v3(0, 0, 0));
         sdp = prox_cyl_signed(&k, s->center, &q, &n);
+        size = k.h + 2.0 * k.r;
     } else if (b->kind == PROX_SHAPE_BOX) {
         prox_bframe f = prox_bframe_make(&b->u.box);
         sdp = prox_bframe_signed(&f, s->center, &q, &n);
         if (!(prox_v3_norm2(n) > 0.0)) n = f.a[2]; /* the centre on the surface: a face normal is valid */
+        size = prox_bframe_size(&f);
     } else {
         sa_solid B;
         sa_prepare(b, &B);
         sdp = sa_signed(&B, s->center, &q, &n);
+        size = B.size;
     }
     r.status = PROX_OK;
     r.sd = sdp - s->radius;
     r.normal = n;
     r.p1 = q;
     r.p2 = prox_v3_mad(s->center, -s->radius, n);
+    prox_signed_closed_form(&r, fabs(sdp) + 2.0 * s->radius + size);
     return r;
 }
 
