@@ -53,12 +53,15 @@ class DistanceResult(_Result):
 
 
 class SignedResult(_Result):
-    """sd (N,) (> 0 distance, <= 0 minus the depth), normal (N,3) from A towards B, p1, p2 (N,3), status."""
+    """sd (N,) (> 0 distance, <= 0 minus the depth), normal (N,3) from A towards B, p1, p2 (N,3),
+    certified (N,) bool (the answer proved within the accuracy bar: 1e-12 x scale disjoint, 1e-9 x
+    scale overlapping), status."""
 
-    __slots__ = ("sd", "normal", "p1", "p2", "status")
+    __slots__ = ("sd", "normal", "p1", "p2", "certified", "status")
 
-    def __init__(self, sd, normal, p1, p2, status):
-        self.sd, self.normal, self.p1, self.p2, self.status = sd, normal, p1, p2, status
+    def __init__(self, sd, normal, p1, p2, certified, status):
+        self.sd, self.normal, self.p1, self.p2 = sd, normal, p1, p2
+        self.certified, self.status = certified, status
 
 
 class TestResult(_Result):

@@ -141,6 +141,7 @@ static void row_signed(batch *B, size_t i, const double *va, const double *vb)
     put3(B->normal, i, ok ? r.normal : nan3);
     put3(B->p1, i, ok ? r.p1 : nan3);
     put3(B->p2, i, ok ? r.p2 : nan3);
+    B->certified[i] = (npy_bool)(ok && r.certified);
 }
 
 /* Intersection verdict of row i. Cylinder pairs as `prox pairs --test --method M`: the separating
@@ -268,11 +269,12 @@ static PyObject *make_outputs(batch *B, npy_intp n)
     }
     if (B->mode == MODE_SIGNED) nrm = new_array(2, n, NPY_DOUBLE);
     if (B->mode != MODE_SIGNED) hit = new_array(1, n, NPY_BOOL);
-    if (B->mode == MODE_DISTANCE) cert = new_array(1, n, NPY_BOOL);
+    if (B->mode != MODE_TEST) cert = new_array(1, n, NPY_BOOL);
     PyObject *out = NULL;
     if (B->mode == MODE_DISTANCE && val && p1 && p2 && hit && cert && st)
         out = PyTuple_Pack(6, val, p1, p2, hit, cert, st);
-    else if (B->mode == MODE_SIGNED && val && nrm && p1 && p2 && st) out = PyTuple_Pack(5, val, nrm, p1, p2, st);
+    else if (B->mode == MODE_SIGNED && val && nrm && p1 && p2 && cert && st)
+        out = PyTuple_Pack(6, val, nrm, p1, p2, cert, st);
     else if (B->mode == MODE_TEST && hit && st) out = PyTuple_Pack(2, hit, st);
     if (out) {
         B->status = PyArray_DATA((PyArrayObject *)st);
@@ -307,7 +309,7 @@ static int check_args(const batch *B, int threads)
 
 PyDoc_STRVAR(query_doc, "query(kind_a, a, kind_b, b, mode, method, threads) -> tuple of arrays\n\n"
                         "Answers every row pair (N vs N, 1 vs N or N vs 1). mode 0 distance -> (distance, p1, p2,\n"
-                        "intersect, certified, status); 1 signed -> (sd, normal, p1, p2, status); 2 test ->\n"
+                        "intersect, certified, status); 1 signed -> (sd, normal, p1, p2, certified, status); 2 test ->\n"
                         "(intersect, status). The GIL is released while the rows run on `threads` threads.");
 
 static PyObject *py_query(PyObject *self, PyObject *args)

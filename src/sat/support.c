@@ -18,7 +18,15 @@ PROX_API prox_signed_result prox_shape_signed_distance_support(const prox_shape 
     prox_body ba = prox_body_make(a), bb = prox_body_make(b);
     /* the ridge search of sup_engine.c assumes centrally symmetric bodies (CYL, BOX, SPH); the added
      * kinds take the general certified method (convex.c), which scales and translates on its own */
-    if (!prox_body_symmetric(&ba) || !prox_body_symmetric(&bb)) return prox_convex_signed(&ba, &bb);
+    if (!prox_body_symmetric(&ba) || !prox_body_symmetric(&bb)) {
+        prox_convex_info info;
+        r = prox_convex_signed_ex(&ba, &bb, &info);
+        if (r.sd <= 0.0 && info.intersect && info.certified) r.certified = 1, r.sd_upper = -info.lower;
+        if (r.sd > 0.0) r.sd_lower = info.lower;
+        prox_body_signed_bounds(&ba, &bb, &r);
+        return r;
+    }
+    prox_body a0 = ba, b0 = bb; /* the bodies as given, for the enclosure */
     prox_vec3 o = ba.c;
     ba.c = prox_v3(0, 0, 0);
     bb.c = prox_v3_sub(bb.c, o);
@@ -29,5 +37,6 @@ PROX_API prox_signed_result prox_shape_signed_distance_support(const prox_shape 
     r.sd /= f;
     r.p1 = prox_v3_mad(o, 1.0 / f, r.p1);
     r.p2 = prox_v3_mad(o, 1.0 / f, r.p2);
+    prox_body_signed_bounds(&a0, &b0, &r); /* the global search proves no depth: overlaps stay uncertified */
     return r;
 }

@@ -62,6 +62,19 @@ def test_signed_distance_matches_reference(refset, method):
     assert np.all(resid[apart] <= TOL_DEPTH * s[apart])
 
 
+def test_signed_certified_within_bar(refset):
+    # A certified signed answer is within the bar of the quad-precision reference (its proved enclosure
+    # is that narrow); the protocol-A pairs are nearly all certified.
+    r = prox.signed_distance(refset.a, refset.b, errors="raise")
+    s = refset.scale
+    assert r.certified.dtype == bool and r.certified.shape == r.sd.shape
+    tol = np.where(refset.sd > 0, TOL_DIST, TOL_DEPTH) * s + _input_tol(refset)
+    err = np.abs(r.sd - refset.sd)
+    assert np.all(err[r.certified] <= tol[r.certified])
+    if refset.name == "agarwal_public":
+        assert r.certified.mean() >= 0.95
+
+
 @pytest.mark.parametrize("method", METHODS)
 def test_verdict_matches_reference(refset, method):
     r = prox.test(refset.a, refset.b, method=method, errors="raise")
