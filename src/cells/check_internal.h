@@ -1,6 +1,7 @@
 /* Internal: the pieces of the cell check (include/prox/cellcheck.h) shared by its files:
- * classify.c (certified box-surface classification), check_bounds.c (bounding boxes of surface sides
- * and the merging of coincident surfaces), check.c (the subdivision and the report). */
+ * classify.c (certified box-surface and box-pair classification), check_bounds.c (bounding boxes of
+ * surface sides and the merging of coincident surfaces), check.c (evaluation, windows, tasks,
+ * threads), check_tree.c (the subdivision of one task), check_merge.c (the report). */
 #ifndef PROX_CELLS_CHECK_INTERNAL_H
 #define PROX_CELLS_CHECK_INTERNAL_H
 
@@ -14,6 +15,17 @@ typedef struct prox_ccbox {
 /* Certified classification of the closed box b against surface s: -1 when f < 0 on every point of
  * b, +1 when f > 0 on every point, 0 when it cannot prove either (the surface may cross b). */
 int prox_cc_classify(const prox_surf *s, const prox_ccbox *b);
+/* The same through the general quadric Taylor form only (prox_cc_classify takes a shortcut for
+ * planes that gives the same verdict; the tests compare the two). */
+int prox_cc_classify_taylor(const prox_surf *s, const prox_ccbox *b);
+
+/* Certified classification of the closed box b against the pair (u, v): with g = f_v - lambda f_u
+ * (*lambda set by the call: the ratio that makes g constant for concentric spheres, coaxial cylinders
+ * and parallel planes), -1 when g < 0 at every point of b, +1 when g > 0 at every point, 0 when it
+ * cannot prove either (or u or v is a torus; *lambda is then 0). Strict: no rounding layer is given
+ * away. g < 0 means no point of b has f_v >= 0 with lambda f_u <= 0; g > 0, none has f_v <= 0 with
+ * lambda f_u >= 0: assignments of signs to u and v that the truth tables may drop (check_tree.c). */
+int prox_cc_classify_pair(const prox_surf *u, const prox_surf *v, const prox_ccbox *b, double *lambda);
 
 /* A box holding every point of the side `sense` (-1: f < 0, +1: f > 0) of s; unbounded axes are
  * +-INFINITY, an empty side gives an empty box. */

@@ -1,5 +1,8 @@
 /* One task of the cell check: a box of one window, subdivided depth first (halving the longest
- * edge) until every part is decided or the resolution is reached.
+ * edge, or, in a box crossed by more surfaces than the truth tables hold, the edge across them:
+ * layer_axis) until every part is decided or the resolution is reached. A child inherits the
+ * surfaces its parent proved it lies on one side of (node), and the sign assignments that no point
+ * of a box has are removed by side boxes and by pair classification (feasible).
  *
  * A box is decided when, for every assignment of signs to the surfaces crossing it (check.c), the
  * window's points are claimed by exactly one cell (clean); when two cells certainly hold all of it
@@ -36,9 +39,16 @@ static const char *const reason_unconfirmed = "interval proof not confirmed by e
  * lower bound, only a looser one. */
 #define KNOWN_BUDGET 16384
 
+/* A box to process. Its surfaces classified on the parent box (negative or positive: not crossing)
+ * are inherited: the parent's proof covers every point of the child, so they are not classified
+ * again. An entry is (surface << 1) | (1 when positive), the surface being its canonical one. So is
+ * the proof that the window holds the whole parent box (its region, possibly hundreds of terms, is
+ * then not evaluated again). */
 typedef struct node {
     prox_ccbox box;
-    size_t off, n; /* cells: pool[off .. off + n) */
+    size_t off, n;   /* cells: pool[off .. off + n) */
+    size_t soff, sn; /* inherited surfaces: spool[soff .. soff + sn) */
+    int win_all;     /* the window holds every point of the box */
 } node;
 
 typedef struct level {
@@ -46,6 +56,8 @@ typedef struct level {
     size_t n, cap;
     size_t *pool;
     size_t np, capp;
+    size_t *spool;
+    size_t nsp, capsp;
 } level;
 
 typedef struct live {
@@ -69,6 +81,7 @@ typedef struct task_state {
     size_t nleaves;                  /* boxes of the resolution probed so far */
     size_t nknown;                   /* boxes refined although every open question was known */
     size_t *idx[3], nidx[3], capidx[3]; /* the task's records of each kind */
+    size_t *known, nknown_s, capknown; /* surfaces decided on the current box (gather_decided) */
 } task_state;
 
 static int grow(void **p, size_t *cap, size_t need, size_t size)
@@ -327,17 +340,41 @@ static double proved_cube(task_state *s, prox_vec3 x, double h, size_t a, size_t
     return 0.0;
 }
 
+/* The live cells that hold x (up to four, in inc) by exact membership; *amb set when x lies on a
+ * surface that decides a cell. */
+static size_t cells_at(const task_state *s, prox_vec3 x, size_t inc[4], int *amb)
+{
+    size_t ninc = 0;
+    *amb = 0;
+    for (size_t q = 0; q < s->nl; ++q) {
+        int v = prox_cell_contains(s->P->m, s->lv[q].cell, x);
+        if (v < 0) *amb = 1;
+        else if (v == 1 && ninc < 4) inc[ninc++] = s->lv[q].cell;
+    }
+    return ninc;
+}
+
+/* Whether a point held by the cells inc would add a finding: a pair not yet proved (any pair when
+ * all_pairs is set), or no cell at all while gaps are still sought. Only then does the point's
+ * window membership matter; it is asked last, because a window's region (a lattice element bounded
+ * by its parent) can be far longer than the cells'. */
+static int would_record(const task_state *s, const size_t *inc, size_t ninc, int amb, int seek_gap, int all_pairs)
+{
+    if (ninc == 0) return !amb && seek_gap;
+    for (size_t i = 0; i < ninc; ++i)
+        for (size_t j = i + 1; j < ninc; ++j)
+            if (all_pairs || pair_known(s, inc[i], inc[j]) < 0) return 1;
+    return 0;
+}
+
 static int probe(task_state *s, const prox_ccbox *b)
 {
     prox_vec3 x = sample(b, 0);
+    size_t inc[4];
+    int amb, rec = 0;
+    size_t ninc = cells_at(s, x, inc, &amb);
+    if (!would_record(s, inc, ninc, amb, !s->gap_known, 0)) return 0;
     if (s->t->wnexpr && prox_cc_in_window(s->P, s->t, x) != 1) return 0;
-    size_t inc[4], ninc = 0;
-    int amb = 0, rec = 0;
-    for (size_t q = 0; q < s->nl; ++q) {
-        int v = prox_cell_contains(s->P->m, s->lv[q].cell, x);
-        if (v < 0) amb = 1;
-        else if (v == 1 && ninc < 4) inc[ninc++] = s->lv[q].cell;
-    }
     double h = 0.5 * fmin(b->hi[0] - b->lo[0], fmin(b->hi[1] - b->lo[1], b->hi[2] - b->lo[2]));
     prox_ccbox cube;
     for (size_t i = 0; i < ninc; ++i)
@@ -361,20 +398,16 @@ static int probe(task_state *s, const prox_ccbox *b)
  * witness found is recorded; what no witness explains is recorded as undecided. */
 static void leaf(task_state *s, const prox_ccbox *b, uint64_t prob)
 {
-    const prox_cell_model *m = s->P->m;
     s->out->leaves++;
     s->nleaves++;
     int gap_found = 0;
     for (int k = 0; k < 27; ++k) {
         prox_vec3 x = sample(b, k);
+        size_t inc[4];
+        int amb;
+        size_t ninc = cells_at(s, x, inc, &amb);
+        if (!would_record(s, inc, ninc, amb, !gap_found, k == 0)) continue;
         if (s->t->wnexpr && prox_cc_in_window(s->P, s->t, x) != 1) continue;
-        size_t inc[4], ninc = 0;
-        int amb = 0;
-        for (size_t q = 0; q < s->nl; ++q) {
-            int v = prox_cell_contains(m, s->lv[q].cell, x);
-            if (v < 0) amb = 1;
-            else if (v == 1 && ninc < 4) inc[ninc++] = s->lv[q].cell;
-        }
         for (size_t i = 0; i < ninc; ++i)
             for (size_t j = i + 1; j < ninc; ++j)
                 if (pair_known(s, inc[i], inc[j]) < 0 || k == 0) add_overlap(s, inc[i], inc[j], b, 0.0, x);
@@ -403,18 +436,38 @@ static void leaf(task_state *s, const prox_ccbox *b, uint64_t prob)
     if (open) add_undecided(s, set, n, b, s->c->overflow ? reason_many : over ? reason_overlap : reason_gap);
 }
 
-/* Assignments of signs to the crossing surfaces that no point of the box can have, removed pairwise:
- * on the part of the box where surface u has sign a (the box cut to a's side box), surface v may be
- * proved wholly negative or positive (classify.c); then (u = a, v = the other sign) is empty. This
- * is what tells that a pin's cylinder never reaches the planes of its lattice element. */
-static uint64_t feasible(prox_ccctx *c)
+static const uint64_t var_neg[PROX_CC_VARS] = {0xAAAAAAAAAAAAAAAAull, 0xCCCCCCCCCCCCCCCCull, 0xF0F0F0F0F0F0F0F0ull,
+                                               0xFF00FF00FF00FF00ull, 0xFFFF0000FFFF0000ull, 0xFFFFFFFF00000000ull};
+
+/* The assignments of signs to variables u and v that pair classification (classify.c) proves no
+ * point of the box has: g = f_v - lambda f_u < 0 leaves no point with f_v >= 0 and the sign of f_u
+ * opposite to lambda's; g > 0, none with f_v <= 0 and f_u of lambda's sign. This is what tells that
+ * a point inside the inner of two concentric spheres (coaxial cylinders, parallel planes) is inside
+ * the outer one, so that a thin shell is not refined along its whole area. */
+static uint64_t pair_empty(prox_ccctx *c, int u, int v)
 {
-    static const uint64_t var_neg[PROX_CC_VARS] = {0xAAAAAAAAAAAAAAAAull, 0xCCCCCCCCCCCCCCCCull, 0xF0F0F0F0F0F0F0F0ull,
-                                                   0xFF00FF00FF00FF00ull, 0xFFFF0000FFFF0000ull, 0xFFFFFFFF00000000ull};
+    const prox_surf *S = c->P->m->surfs;
+    double lam;
+    int k = prox_cc_classify_pair(&S[c->vsurf[u]], &S[c->vsurf[v]], &c->box, &lam);
+    if (!k) return 0;
+    const uint64_t u_as_lam = lam > 0.0 ? ~var_neg[u] : var_neg[u]; /* f_u of lambda's sign */
+    return k < 0 ? ~var_neg[v] & ~u_as_lam : var_neg[v] & u_as_lam;
+}
+
+/* Assignments of signs to the crossing surfaces that no point of the box can have, removed pairwise.
+ * First the pair classification of each pair (pair_empty). Then, while an assignment of prob is
+ * left: on the part of the box where surface u has sign a (the box cut to a's side box), surface v
+ * may be proved wholly negative or positive (classify.c); then (u = a, v = the other sign) is empty.
+ * This is what tells that a pin's cylinder never reaches the planes of its lattice element. Every
+ * removal is a proof, so stopping once nothing of prob is left changes nothing but the time. */
+static uint64_t feasible(prox_ccctx *c, uint64_t prob)
+{
     const prox_ccprep *P = c->P;
     uint64_t f = PROX_CC_ALL;
-    for (int u = 0; u < c->nvar; ++u)
-        for (int a = -1; a <= 1; a += 2) {
+    for (int u = 0; u < c->nvar && (prob & f); ++u)
+        for (int v = u + 1; v < c->nvar && (prob & f); ++v) f &= ~pair_empty(c, u, v);
+    for (int u = 0; u < c->nvar && (prob & f); ++u)
+        for (int a = -1; a <= 1 && (prob & f); a += 2) {
             prox_ccbox side = prox_cc_side_box(&P->m->surfs[c->vsurf[u]], a);
             prox_ccbox e = prox_ccbox_and(&side, &c->box);
             uint64_t mu = a < 0 ? var_neg[u] : ~var_neg[u];
@@ -426,7 +479,7 @@ static uint64_t feasible(prox_ccctx *c)
             for (int i = 0; i < 3; ++i) same = same && e.lo[i] == c->box.lo[i] && e.hi[i] == c->box.hi[i];
             if (same) continue; /* the side box does not cut the box: nothing to learn */
             for (int v = 0; v < c->nvar; ++v) {
-                if (v == u) continue;
+                if (v == u || !(prob & f & mu)) continue; /* nothing of (u = a) left to remove */
                 int k = prox_cc_classify(&P->m->surfs[c->vsurf[v]], &e);
                 if (k < 0) f &= ~(mu & ~var_neg[v]);
                 else if (k > 0) f &= ~(mu & var_neg[v]);
@@ -435,24 +488,104 @@ static uint64_t feasible(prox_ccctx *c)
     return f;
 }
 
-static int push(level *L, const prox_ccbox *b, const live *lv, size_t nl)
+static int push(level *L, const prox_ccbox *b, const live *lv, size_t nl, const size_t *known, size_t nk, int win_all)
 {
     if (!grow((void **)&L->v, &L->cap, L->n + 1, sizeof *L->v) ||
-        !grow((void **)&L->pool, &L->capp, L->np + nl, sizeof *L->pool))
+        !grow((void **)&L->pool, &L->capp, L->np + nl, sizeof *L->pool) ||
+        !grow((void **)&L->spool, &L->capsp, L->nsp + nk, sizeof *L->spool))
         return 0;
-    L->v[L->n++] = (node){*b, L->np, nl};
+    L->v[L->n++] = (node){*b, L->np, nl, L->nsp, nk, win_all};
     for (size_t k = 0; k < nl; ++k) L->pool[L->np++] = lv[k].cell;
+    if (nk) memcpy(L->spool + L->nsp, known, nk * sizeof *known);
+    L->nsp += nk;
     return 1;
 }
 
+/* Marks the parent's decided surfaces as classified on the context's (child) box. */
+static void seed_decided(prox_ccctx *c, const size_t *known, size_t nk)
+{
+    for (size_t k = 0; k < nk; ++k) {
+        size_t r = known[k] >> 1;
+        c->seen[r] = c->stamp;
+        c->cls[r] = (known[k] & 1) ? 1 : -1;
+        c->var[r] = -1;
+    }
+}
+
+/* Regions longer than this are not scanned for decided surfaces: the scan reads every term, while
+ * their evaluation skips the subtrees whose boxes miss the box (a lattice element bounded by its
+ * parent has hundreds of terms, most of them far away). */
+#define GATHER_TERMS_MAX 64
+
+/* Appends to s->known the surfaces of the region [e, e + n) classified negative or positive on the
+ * context's box; var = -2 marks one already taken (var is read only for crossing surfaces). */
+static int gather_region(task_state *s, size_t e, size_t n)
+{
+    prox_ccctx *c = s->c;
+    const prox_ccprep *P = s->P;
+    if (n > GATHER_TERMS_MAX) return 1;
+    for (size_t i = e; i < e + n; ++i) {
+        const prox_term *t = &P->m->terms[i];
+        if (t->op != PROX_OP_LEAF) continue;
+        size_t r = P->rep[t->surf];
+        if (c->seen[r] != c->stamp || c->cls[r] == 0 || c->var[r] == -2) continue;
+        if (!grow((void **)&s->known, &s->capknown, s->nknown_s + 1, sizeof *s->known)) return 0;
+        s->known[s->nknown_s++] = (r << 1) | (c->cls[r] > 0);
+        c->var[r] = -2;
+    }
+    return 1;
+}
+
+/* The surfaces of the window and of the live cells decided on the current box, for its halves. */
+static int gather_decided(task_state *s)
+{
+    s->nknown_s = 0;
+    if (!gather_region(s, s->t->wexpr, s->t->wnexpr)) return 0;
+    const prox_cell *cells = s->P->m->cells;
+    for (size_t q = 0; q < s->nl; ++q)
+        if (!gather_region(s, cells[s->lv[q].cell].expr, cells[s->lv[q].cell].nexpr)) return 0;
+    return 1;
+}
+
+/* A box crossed by more surfaces than the truth tables hold is split across the surfaces rather than
+ * along its longest edge, while its edge on that axis is at least 1/LAYER_ASPECT of the longest: a
+ * stack of thin layers (fuel plates, shells) is then cut into slabs along the layers, whose number
+ * grows with the layers, not cubes, whose number grows with the layers' area over their pitch squared.
+ * How a box is cut changes only the time: every box is still decided by the same proofs. */
+#define LAYER_ASPECT 16.0
+
+/* The axis along which the crossing surfaces' unit normals (at the box centre) point the most. */
+static int layer_axis(const prox_ccctx *c, const prox_ccbox *b, int ax)
+{
+    double acc[3] = {0.0, 0.0, 0.0};
+    for (int v = 0; v < c->nvar; ++v) {
+        const prox_surf *S = &c->P->m->surfs[c->vsurf[v]];
+        if (S->kind != PROX_SURF_QUADRIC) continue;
+        const double *q = S->q;
+        const double x = 0.5 * b->lo[0] + 0.5 * b->hi[0] - S->o.x, y = 0.5 * b->lo[1] + 0.5 * b->hi[1] - S->o.y,
+                     z = 0.5 * b->lo[2] + 0.5 * b->hi[2] - S->o.z;
+        const double g[3] = {2.0 * q[0] * x + q[3] * y + q[5] * z + q[6], 2.0 * q[1] * y + q[3] * x + q[4] * z + q[7],
+                             2.0 * q[2] * z + q[4] * y + q[5] * x + q[8]};
+        const double n = fabs(g[0]) + fabs(g[1]) + fabs(g[2]);
+        if (n > 0.0 && isfinite(n))
+            for (int i = 0; i < 3; ++i) acc[i] += fabs(g[i]) / n;
+    }
+    int best = ax;
+    for (int i = 0; i < 3; ++i)
+        if (acc[i] > acc[best] && LAYER_ASPECT * (b->hi[i] - b->lo[i]) >= b->hi[ax] - b->lo[ax]) best = i;
+    return best;
+}
+
 /* Decides one box, or pushes its two halves onto `next`. */
-static void process(task_state *s, const node *nd, size_t *pool, level *next)
+static void process(task_state *s, const node *nd, const size_t *pool, const size_t *spool, level *next)
 {
     const prox_ccprep *P = s->P;
     const prox_cell_model *m = P->m;
     const prox_ccbox *b = &nd->box;
     prox_ccctx_box(s->c, b);
-    prox_ccmask W = prox_cc_eval(s->c, s->t->wexpr, s->t->wnexpr);
+    seed_decided(s->c, spool + nd->soff, nd->sn);
+    const prox_ccmask all = {PROX_CC_ALL, PROX_CC_ALL};
+    prox_ccmask W = nd->win_all ? all : prox_cc_eval(s->c, s->t->wexpr, s->t->wnexpr);
     if (!W.p) return;
     s->out->boxes++;
     uint64_t oneP = 0, twoP = 0, oneT = 0;
@@ -469,8 +602,9 @@ static void process(task_state *s, const node *nd, size_t *pool, level *next)
         oneT |= k.t;
         if (k.t == PROX_CC_ALL && nall < PROX_CELLS_UNDECIDED_MAX) allc[nall++] = i;
     }
+    const uint32_t stamp = s->c->stamp; /* the classifications of b (a probe may move the context) */
     uint64_t prob = W.p & ~(oneT & ~twoP);
-    if (prob && s->c->nvar >= 2) prob &= feasible(s->c);
+    if (prob && s->c->nvar >= 2) prob &= feasible(s->c, prob);
     if (!prob) {
         s->out->clean++;
         return;
@@ -486,6 +620,7 @@ static void process(task_state *s, const node *nd, size_t *pool, level *next)
     int ax = 0;
     for (int i = 1; i < 3; ++i)
         if (b->hi[i] - b->lo[i] > b->hi[ax] - b->lo[ax]) ax = i;
+    const int sx = s->c->overflow ? layer_axis(s->c, b, ax) : ax; /* before a probe moves the context */
     /* The boundary of a known finding is refined only until its boxes are small next to it; once the
      * task has probed LEAF_BUDGET boxes, not at all (undecided slivers then grow by whole boxes). */
     long und = -1;
@@ -510,8 +645,13 @@ static void process(task_state *s, const node *nd, size_t *pool, level *next)
         return;
     }
     prox_ccbox l = *b, r = *b;
-    l.hi[ax] = r.lo[ax] = 0.5 * b->lo[ax] + 0.5 * b->hi[ax];
-    if (!push(next, &l, s->lv, s->nl) || !push(next, &r, s->lv, s->nl)) s->out->failed = 1;
+    l.hi[sx] = r.lo[sx] = 0.5 * b->lo[sx] + 0.5 * b->hi[sx];
+    s->nknown_s = 0;
+    if (s->c->stamp == stamp && !gather_decided(s)) s->nknown_s = 0;
+    const int win_all = W.t == PROX_CC_ALL;
+    if (!push(next, &l, s->lv, s->nl, s->known, s->nknown_s, win_all) ||
+        !push(next, &r, s->lv, s->nl, s->known, s->nknown_s, win_all))
+        s->out->failed = 1;
 }
 
 void prox_cc_run_task(prox_ccctx *c, const prox_cctask *t, size_t task_index, prox_ccout *out)
@@ -533,14 +673,18 @@ void prox_cc_run_task(prox_ccctx *c, const prox_cctask *t, size_t task_index, pr
     /* Depth first (a stack): a problem is met at the resolution early, so that the budgets above
      * stop the refinement of a hopeless sliver at coarse boxes. The pool is a stack too: the cells
      * of the nodes above the top are dead once it is popped. */
-    if (!push(&cur, &t->box, s.lv, nl)) out->failed = 1;
+    if (!push(&cur, &t->box, s.lv, nl, NULL, 0, 0)) out->failed = 1;
     while (cur.n && !out->failed) {
         node nd = cur.v[--cur.n];
         cur.np = nd.off + nd.n;
-        process(&s, &nd, cur.pool, &cur);
+        cur.nsp = nd.soff + nd.sn;
+        process(&s, &nd, cur.pool, cur.spool, &cur);
     }
     free(cur.v);
     free(cur.pool);
+    free(cur.spool);
+    free(next.spool);
+    free(s.known);
     free(next.v);
     free(next.pool);
     free(s.lv);

@@ -7,6 +7,9 @@
 
 #include "cells/cells_internal.h"
 
+/* Below this |y| every quadratic term is finite, so a zero coefficient gives an exact zero term. */
+#define PLANE_Y_MAX 1e150
+
 PROX_API double prox_surf_eval(const prox_surf *s, prox_vec3 x)
 {
     if (!s) return NAN;
@@ -18,6 +21,11 @@ PROX_API double prox_surf_eval(const prox_surf *s, prox_vec3 x)
         return u * u + v * v - 1.0;
     }
     const double *q = s->q;
+    /* A plane: the same sum with its exact-zero quadratic terms left out (the value is the same bit
+     * for bit while they are finite zeros, |y| < PLANE_Y_MAX). */
+    if ((q[0] == 0.0) & (q[1] == 0.0) & (q[2] == 0.0) & (q[3] == 0.0) & (q[4] == 0.0) & (q[5] == 0.0) &&
+        fabs(y.x) < PLANE_Y_MAX && fabs(y.y) < PLANE_Y_MAX && fabs(y.z) < PLANE_Y_MAX)
+        return y.x * q[6] + y.y * q[7] + y.z * q[8] + q[9];
     return y.x * (q[0] * y.x + q[3] * y.y + q[5] * y.z + q[6]) + y.y * (q[1] * y.y + q[4] * y.z + q[7]) +
            y.z * (q[2] * y.z + q[8]) + q[9];
 }
