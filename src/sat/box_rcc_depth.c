@@ -20,9 +20,13 @@
  *        swept along the segment it is h_E(D) - D.(delta - g), stationary at the normals of E at the
  *        feet from delta - g (sup_ellipse_feet, as the cylinder pair's ridges).
  * Every candidate is evaluated exactly (any direction is an upper bound of the depth), and every
- * stratum's stationary points are among them, so their minimum is the depth. Degenerate poses
- * (a vertex on the rim's axis, the cylinder axis within PROX_TOL_RIDGE_THIN of a box face plane, a
- * shadow point at a circle's centre, the touching band) return 0: the global search answers. */
+ * stratum's stationary points are among them, so their minimum is the depth. A stratum whose lower
+ * bound (a vertex's octant, a ridge, a shadow vertex's normal arc: bd_cone_lb, bd_ridge_lb,
+ * bd_arc_lb) cannot beat the best value found by more than the search tolerance is skipped: the
+ * strata are visited cheapest first, so on random pairs most ridges' feet are never solved.
+ * Degenerate poses (a vertex on the rim's axis, the cylinder axis within PROX_TOL_RIDGE_THIN of a box
+ * face plane, a shadow point at a circle's centre, the touching band) return 0: the global search
+ * answers. */
 #include "sup_engine.h"
 
 #include "core/circle.h"
@@ -33,9 +37,14 @@
 typedef struct bd_state {
     const prox_body *a, *b;
     prox_vec3 delta;
+    double dl[3], hcmin; /* delta along the box's axes; min(r, hh), the least of hc_B */
     double best;
     prox_vec3 best_d;
 } bd_state;
+
+/* |(x, y)| without hypot's guards: the pair is at unit scale (prox_sat_box_rcc_depth), where no
+ * square can overflow or underflow. */
+static inline double bd_len(double x, double y) { return sqrt(x * x + y * y); }
 
 /* Evaluates v / |v| (v need not be unit; v = 0 is ignored). */
 static void bd_one(bd_state *s, prox_vec3 v)
@@ -43,15 +52,20 @@ static void bd_one(bd_state *s, prox_vec3 v)
     double n = prox_v3_norm(v);
     if (!(n > 0.0) || !isfinite(n)) return;
     v = prox_v3_scale(v, 1.0 / n);
-    double f = prox_body_hc(s->a, v) + prox_body_hc(s->b, v) - prox_v3_dot(v, s->delta);
+    double f = prox_bframe_support(&s->a->box, v) + prox_cyl_hc(&s->b->cyl, v) - prox_v3_dot(v, s->delta);
     if (f < s->best) s->best = f, s->best_d = v;
 }
 
-/* Evaluates +-v / |v|. */
+/* Evaluates +-v / |v|: both centred support functions are even, so phi(-D) = phi(D) + 2 D.delta
+ * (the same floating-point value as evaluating -D afresh: negation is exact). */
 static void bd_pm(bd_state *s, prox_vec3 v)
 {
-    bd_one(s, v);
-    bd_one(s, prox_v3_neg(v));
+    double n = prox_v3_norm(v);
+    if (!(n > 0.0) || !isfinite(n)) return;
+    v = prox_v3_scale(v, 1.0 / n);
+    double h = prox_bframe_support(&s->a->box, v) + prox_cyl_hc(&s->b->cyl, v), d = prox_v3_dot(v, s->delta);
+    if (h - d < s->best) s->best = h - d, s->best_d = v;
+    if (h + d < s->best) s->best = h + d, s->best_d = prox_v3_neg(v);
 }
 
 /* Vertex k (bits: signs along a_0, a_1, a_2) of the box, absolute. */
@@ -62,11 +76,29 @@ static prox_vec3 bd_vertex(const prox_body *a, int k)
     return v;
 }
 
-/* Box vertex against the cylinder's side and its rims. 0 when a vertex lies on a rim's axis. */
+/* A lower bound of phi over the unit D whose box support set holds g = sum of s_l h_l a_l over the
+ * axes l of `used` (bits), D.a_l = 0 on the others: a vertex's octant (all three) or an edge's
+ * quarter of its ridge (two). There h_A(D) = D.g, so phi(D) = hc_B(D) - D.(delta - g), and hc_B >=
+ * min(r, hh) (the cylinder holds the ball of that radius about its centre), while D.q over the cone is
+ * at most the length of q's components s_l q.a_l clamped at 0 (the cone's unit vector nearest q). */
+static double bd_cone_lb(const bd_state *s, const double sg[3], unsigned used)
+{
+    double m2 = 0.0;
+    for (int l = 0; l < 3; ++l) {
+        double ql = sg[l] * s->dl[l] - s->a->box.h[l];
+        if ((used >> l & 1) && ql > 0.0) m2 += ql * ql;
+    }
+    return s->hcmin - sqrt(m2);
+}
+
+/* Box vertex against the cylinder's side and its rims. 0 when a vertex lies on a rim's axis. A vertex
+ * whose octant cannot beat the best value (bd_cone_lb) is skipped. */
 static int bd_vertices(bd_state *s, double tol)
 {
     const prox_cyl *c = &s->b->cyl;
     for (int k = 0; k < 8; ++k) {
+        double sg[3] = {(k & 1) ? 1.0 : -1.0, (k & 2) ? 1.0 : -1.0, (k & 4) ? 1.0 : -1.0};
+        if (bd_cone_lb(s, sg, 7u) >= s->best - tol) continue;
         prox_vec3 v = bd_vertex(s->a, k);
         prox_vec3 rel = prox_v3_sub(v, s->b->c), perp = prox_v3_reject(rel, c->w);
         bd_pm(s, perp); /* vertex against the side: the shadow vertex nearest the axis */
@@ -79,9 +111,9 @@ static int bd_vertices(bd_state *s, double tol)
         for (int e = -1; e <= 1; e += 2) {
             prox_vec3 rc = prox_v3_mad(s->b->c, e * c->hh, c->w);
             double z = ax - e * c->hh;
-            if (hypot(pn - c->r, z) <= s->best + tol) /* the nearest rim point */
+            if (bd_len(pn - c->r, z) < s->best - tol) /* the nearest rim point */
                 bd_one(s, prox_v3_sub(v, prox_v3_mad(rc, c->r, u)));
-            if (hypot(pn + c->r, z) <= s->best + tol) /* the farthest */
+            if (bd_len(pn + c->r, z) < s->best - tol) /* the farthest */
                 bd_one(s, prox_v3_sub(v, prox_v3_mad(rc, -c->r, u)));
         }
     }
@@ -105,7 +137,8 @@ static double bd_ridge_lb(const bd_state *s, int i)
     for (int q = 0; q < 3; ++q) {
         double hg = f->h[j] * fabs(prox_v3_dot(n[q], f->a[j])) + f->h[k] * fabs(prox_v3_dot(n[q], f->a[k])) +
                     c->hh * fabs(prox_v3_dot(n[q], c->w)), dd = prox_v3_dot(n[q], s->delta);
-        m = fmin(m, fmin(hg - dd, hg + dd));
+        double v = hg - fabs(dd);
+        if (v < m) m = v;
     }
     if (m >= 0.0) return b + m;
     /* delta outside G: its distance to G is at most that to the point of G nearest along the
@@ -119,8 +152,70 @@ static double bd_ridge_lb(const bd_state *s, int i)
     return b - prox_v3_dist(dl, g);
 }
 
-/* The ridge D.a_i = 0 (an edge of the box along a_i against a rim point): 0 when degenerate. */
-static int bd_edge_ridge(bd_state *s, int i)
+/* The normal arcs of the vertices of G on a ridge (the plane's unit D, coordinates along e1, e2): the
+ * arc of the vertex with signs (s_j, s_k, s_d) is {D : s_j D.J >= 0, s_k D.K >= 0, s_d D.d >= 0}
+ * (J, K the rectangle's half edges, d the half axis, in the plane). Its ends are among the six unit
+ * directions perpendicular to J, K or d, kept here with their dot products and h_E. */
+typedef struct bd_arcs {
+    double c[3][2], slack[3]; /* J, K, d and the slack of their sign tests */
+    double ray[6][2], dot[6][3], he[6];
+    int n;
+} bd_arcs;
+
+static void bd_arcs_make(bd_arcs *A, const double c[3][2], double ea, double eb)
+{
+    A->n = 0;
+    for (int q = 0; q < 3; ++q) {
+        A->c[q][0] = c[q][0], A->c[q][1] = c[q][1];
+        double cn = bd_len(c[q][0], c[q][1]);
+        A->slack[q] = 1e-9 * cn; /* a sign within rounding counts as both: the bounds only weaken */
+        if (!(cn > 0.0)) continue;
+        for (int sg = -1; sg <= 1; sg += 2) {
+            double r0 = -sg * c[q][1] / cn, r1 = sg * c[q][0] / cn;
+            A->ray[A->n][0] = r0, A->ray[A->n][1] = r1;
+            for (int t = 0; t < 3; ++t) A->dot[A->n][t] = c[t][0] * r0 + c[t][1] * r1;
+            A->he[A->n++] = bd_len(ea * r0, eb * r1);
+        }
+    }
+}
+
+/* Is D (dot products dd with J, K, d) on the arc of signs sg? */
+static int bd_on_arc(const bd_arcs *A, const double sg[3], const double dd[3])
+{
+    return sg[0] * dd[0] >= -A->slack[0] && sg[1] * dd[1] >= -A->slack[1] && sg[2] * dd[2] >= -A->slack[2];
+}
+
+/* A lower bound of h_E(D) - D.p over the arc of signs sg: the least h_E on it (b when it holds +-e2,
+ * where h_E is least, else at an end: h_E is unimodal between its minima at +-e2) minus the largest
+ * D.p (|p| when it holds p's direction, else at an end). Candidate ends that pass the sign tests only
+ * by the slack can only lower the bound. */
+static double bd_arc_lb(const bd_arcs *A, const double sg[3], double eb, double p0, double p1)
+{
+    double pn = bd_len(p0, p1), dd[3], hmin = INFINITY, dmax = -INFINITY;
+    for (int t = 0; t < 3; ++t) dd[t] = A->c[t][1];
+    int e2 = bd_on_arc(A, sg, dd);
+    for (int t = 0; t < 3; ++t) dd[t] = -dd[t];
+    e2 = e2 || bd_on_arc(A, sg, dd);
+    for (int t = 0; t < 3; ++t) dd[t] = pn > 0.0 ? (A->c[t][0] * p0 + A->c[t][1] * p1) / pn : 0.0;
+    if (!(pn > 0.0) || bd_on_arc(A, sg, dd)) dmax = pn;
+    for (int r = 0; r < A->n; ++r) {
+        if (!bd_on_arc(A, sg, A->dot[r])) continue;
+        double v = A->ray[r][0] * p0 + A->ray[r][1] * p1; /* (no fmin/fmax: libm calls on this path) */
+        if (A->he[r] < hmin) hmin = A->he[r];
+        if (v > dmax) dmax = v;
+    }
+    if (e2 || hmin == INFINITY) hmin = eb;
+    if (dmax == -INFINITY) dmax = pn;
+    return hmin - dmax;
+}
+
+/* The ridge D.a_i = 0 (an edge of the box along a_i against a rim point): 0 when degenerate. On
+ * the normal arc of the vertex g of G (the D of the plane with sign(D.a_j) = s_j, sign(D.a_k) =
+ * s_k, sign(D.d) = s_d), phi = h_E(D) - D.(delta - g), at least the least h_E on the arc minus the
+ * largest D.(delta - g) there (bd_arc_lb): a vertex whose bound exceeds the best value by more than
+ * tol cannot hold a better stationary point, and its feet are not solved. The vertices are visited
+ * in the order of that bound, so the best value falls early. */
+static int bd_edge_ridge(bd_state *s, int i, double tol)
 {
     const prox_bframe *f = &s->a->box;
     const prox_cyl *c = &s->b->cyl;
@@ -142,13 +237,24 @@ static int bd_edge_ridge(bd_state *s, int i)
      * D in the corner's quadrant has sign(D.d) = sd, i.e. unless both sj d_j sd and sk d_k sd are
      * negative (a half axis d = 0 leaves the four corners, taken once) */
     double dj = c->hh * prox_v3_dot(c->w, f->a[j]), dk = c->hh * prox_v3_dot(c->w, f->a[k]);
+    double p1[8], p2[8], lb[8];
+    int ord[8], nv = 0;
+    bd_arcs A;
+    bd_arcs_make(&A, (const double[3][2]){{j1, j2}, {k1, k2}, {d1, d2}}, ea, eb);
     for (int m = 0; m < 8; ++m) {
         double sj = (m & 1) ? 1.0 : -1.0, sk = (m & 2) ? 1.0 : -1.0, sd = (m & 4) ? 1.0 : -1.0;
         if (sj * dj * sd < 0.0 && sk * dk * sd < 0.0) continue;
         if (dj == 0.0 && dk == 0.0 && sd < 0.0) continue;
         double g1 = sj * j1 + sk * k1 + sd * d1, g2 = sj * j2 + sk * k2 + sd * d2;
-        int n = 0;
-        if (sup_ellipse_feet(ea, eb, q1 - g1, q2 - g2, e1, e2, cand, &n, 48) < 0) return 0;
+        p1[m] = q1 - g1, p2[m] = q2 - g2, lb[m] = bd_arc_lb(&A, (const double[3]){sj, sk, sd}, eb, p1[m], p2[m]);
+        int at = nv++;
+        for (; at > 0 && lb[ord[at - 1]] > lb[m]; --at) ord[at] = ord[at - 1];
+        ord[at] = m;
+    }
+    for (int v = 0; v < nv; ++v) {
+        int m = ord[v], n = 0;
+        if (lb[m] >= s->best - tol) break;
+        if (sup_ellipse_feet(ea, eb, p1[m], p2[m], e1, e2, cand, &n, 48) < 0) return 0;
         for (int t = 0; t < n; ++t) bd_one(s, prox_v3_reject(cand[t], ai)); /* outward normals of E: the sign is D's */
     }
     return 1;
@@ -158,27 +264,42 @@ int sup_box_cyl_depth_enum(const prox_body *a, const prox_body *b, prox_signed_r
 {
     bd_state s = {.a = a, .b = b, .delta = prox_v3_sub(b->c, a->c), .best = INFINITY};
     s.best_d = b->cyl.w;
+    for (int l = 0; l < 3; ++l) s.dl[l] = prox_v3_dot(s.delta, a->box.a[l]);
+    s.hcmin = b->cyl.r < b->cyl.hh ? b->cyl.r : b->cyl.hh;
     bd_pm(&s, b->cyl.w);
     for (int i = 0; i < 3; ++i) {
         bd_pm(&s, a->box.a[i]);
         bd_pm(&s, prox_v3_cross(a->box.a[i], b->cyl.w));
     }
+    /* A stratum whose lower bound is within tol of the best value (or above it) can improve the depth
+     * by at most tol = 1e-13 S, far below the 1e-9 S the depth promises: it is skipped (the arcs'
+     * bounds are often exact at an arc's end, a direction already evaluated above). */
     double tol = PROX_TOL_SEARCH * fmax(prox_v3_norm(s.delta), fmax(a->size, b->size));
     int ok = bd_vertices(&s, tol);
-    /* the edge ridges, the most promising first; one whose bound exceeds the best is skipped */
+    /* the edge ridges, the most promising first; one whose bound reaches the best is skipped */
     double lb[3];
     int ord[3] = {0, 1, 2};
-    for (int i = 0; i < 3; ++i) lb[i] = bd_ridge_lb(&s, i);
+    for (int i = 0; i < 3; ++i) { /* and the least of its four quarters' bounds */
+        lb[i] = bd_ridge_lb(&s, i);
+        double lq = INFINITY, sg[3];
+        for (int q = 0; q < 4; ++q) {
+            sg[i] = 0.0, sg[(i + 1) % 3] = (q & 1) ? 1.0 : -1.0, sg[(i + 2) % 3] = (q & 2) ? 1.0 : -1.0;
+            double v = bd_cone_lb(&s, sg, 7u & ~(1u << i));
+            if (v < lq) lq = v;
+        }
+        if (lq > lb[i]) lb[i] = lq;
+    }
     for (int i = 0; i < 3; ++i)
         for (int j = i + 1; j < 3; ++j)
             if (lb[ord[j]] < lb[ord[i]]) { int t = ord[i]; ord[i] = ord[j]; ord[j] = t; }
     for (int i = 0; ok && i < 3; ++i)
-        if (!(lb[ord[i]] > s.best + tol)) ok = bd_edge_ridge(&s, ord[i]);
+        if (lb[ord[i]] < s.best - tol) ok = bd_edge_ridge(&s, ord[i], tol);
     res->status = PROX_OK;
     res->sd = -s.best;
     res->normal = s.best_d;
     if (!ok || !(s.best > 0.0)) return 0;
     sup_overlap_answer(a, b, s.best_d, res);
+    res->certified = 1; /* every stratum enumerated or bounded: the depth is proved (prox_body_signed_bounds) */
     return 1;
 }
 
@@ -193,21 +314,45 @@ unsigned long long prox_sat_box_depth_fallbacks(void)
     return atomic_load_explicit(&g_box_depth_fallbacks, memory_order_relaxed);
 }
 
+/* The box and the cylinder as support-engine bodies relative to the box centre *o, scaled by *f (a
+ * power of two: exact) to unit scale, as the engine's entry point (support.c) prepares them, built
+ * here without the generic constructor's copies of the whole body. */
+static void bd_bodies(const prox_box *a, const prox_rcc *b, prox_body *ba, prox_body *bb, prox_vec3 *o, double *f)
+{
+    ba->kind = PROX_BODY_BOX;
+    ba->cyl = (prox_cyl){0}, bb->box = (prox_bframe){0}, ba->r = bb->r = 0.0; /* the other kinds' parts */
+    ba->box = prox_bframe_make(a);
+    *o = ba->box.m;
+    ba->box.m = prox_v3(0, 0, 0);
+    ba->size = prox_bframe_size(&ba->box);
+    bb->kind = PROX_BODY_CYL;
+    bb->cyl = prox_cyl_make(b, prox_v3(0, 0, 0)); /* centred: caps at -+hh w (core/body.c) */
+    bb->cyl.c = prox_v3(0, 0, 0);
+    bb->cyl.cap[0] = bb->cyl.b = prox_v3_scale(bb->cyl.w, -bb->cyl.hh);
+    bb->cyl.cap[1] = prox_v3_scale(bb->cyl.w, bb->cyl.hh);
+    bb->size = bb->cyl.h > 2.0 * bb->cyl.r ? bb->cyl.h : 2.0 * bb->cyl.r;
+    bb->c = prox_v3_sub(prox_rcc_center(b), *o);
+    double S = prox_v3_norm(bb->c);
+    S = ba->size > S ? ba->size : S;
+    S = bb->size > S ? bb->size : S;
+    *f = prox_unit_scale(S);
+    ba->c = prox_v3(0, 0, 0);
+    for (int k = 0; k < 3; ++k) ba->box.h[k] *= *f;
+    ba->size *= *f;
+    bb->c = prox_v3_scale(bb->c, *f);
+    bb->cyl = prox_cyl_scaled(&bb->cyl, *f);
+    bb->size *= *f;
+}
+
 prox_signed_result prox_sat_box_rcc_depth(const prox_box *a, const prox_rcc *b)
 {
     prox_signed_result r = {0};
     if (!a || !b) { r.status = PROX_EINVAL_ARG; return r; }
-    prox_shape sa = prox_shape_from_box(*a), sb = prox_shape_from_rcc(*b);
-    if ((r.status = prox_shape_validate(&sa)) != PROX_OK || (r.status = prox_shape_validate(&sb)) != PROX_OK) return r;
-    /* relative to A's centre and at unit scale (a power of two, exact), as the support engine's
-     * entry point (support.c) */
-    prox_body ba = prox_body_make(&sa), bb = prox_body_make(&sb);
-    prox_vec3 o = ba.c;
-    ba.c = prox_v3(0, 0, 0);
-    bb.c = prox_v3_sub(bb.c, o);
-    double f = prox_unit_scale(fmax(prox_v3_norm(bb.c), fmax(ba.size, bb.size)));
-    ba = prox_body_scaled(&ba, f);
-    bb = prox_body_scaled(&bb, f);
+    if ((r.status = prox_box_validate(a)) != PROX_OK || (r.status = prox_rcc_validate(b)) != PROX_OK) return r;
+    prox_body ba, bb;
+    prox_vec3 o;
+    double f;
+    bd_bodies(a, b, &ba, &bb, &o, &f);
     if (!sup_box_cyl_depth_enum(&ba, &bb, &r)) {
         atomic_fetch_add_explicit(&g_box_depth_fallbacks, 1, memory_order_relaxed);
         r = sup_signed_distance(&ba, &bb, NULL);
