@@ -198,6 +198,36 @@ static void test_signed_depth_vs_global(void **state)
     assert_true(checked >= 100);
 }
 
+/* Deep overlaps of wide cylinders (radii up to 10, heights down to 0.5, centres within 3): the rim-rim
+ * cells whose (farthest, farthest) pairs no bound excludes are solved by the far-point stationary
+ * points (rcc_depth.c, dp_cells_far), so the enumeration settles every pair (its answer certified,
+ * none left to the global search), and agrees with the global search to 1e-9 S. */
+static void test_signed_deep_overlap_enumerated(void **state)
+{
+    (void)state;
+    test_rng g = test_rng_seed(4011);
+    int checked = 0, uncertified = 0;
+    for (int it = 0; it < 300; ++it) {
+        prox_vec3 wa = test_unit(&g), wb = test_unit(&g), cb = prox_v3_scale(test_unit(&g), test_range(&g, 0.0, 3.0));
+        double ha = test_range(&g, 0.5, 10.0), hb = test_range(&g, 0.5, 10.0);
+        prox_rcc a = {prox_v3_scale(wa, -0.5 * ha), prox_v3_scale(wa, ha), test_range(&g, 0.5, 10.0)};
+        prox_rcc b = {prox_v3_mad(cb, -0.5 * hb, wb), prox_v3_scale(wb, hb), test_range(&g, 0.5, 10.0)};
+        double S = prox_rcc_pair_scale(&a, &b);
+        prox_signed_result r = prox_rcc_signed_distance(&a, &b);
+        assert_int_equal(r.status, PROX_OK);
+        if (!(r.sd < -1e-6 * S)) continue;
+        prox_shape sa = prox_shape_from_rcc(a), sb = prox_shape_from_rcc(b);
+        prox_signed_result q = prox_shape_signed_distance_support(&sa, &sb);
+        if (fabs(r.sd - q.sd) > 1e-9 * S) print_error("pair %d: enum %.17g global %.17g\n", it, r.sd, q.sd);
+        assert_near(r.sd, q.sd, 1e-9 * S);
+        uncertified += !r.certified;
+        checked++;
+    }
+    printf("# deep overlaps: %d checked, %d not certified\n", checked, uncertified);
+    assert_true(checked >= 200);
+    assert_int_equal(uncertified, 0);
+}
+
 static prox_vec3 rot_apply_pt(const test_rot *R, prox_vec3 p, prox_vec3 t) { return prox_v3_add(test_rot_apply(R, p), t); }
 
 static void test_signed_properties(void **state)
@@ -381,6 +411,7 @@ int main(void)
         cmocka_unit_test(test_signed_paper_cases),   cmocka_unit_test(test_signed_agarwal_public),
         cmocka_unit_test(test_signed_stress_public), cmocka_unit_test(test_signed_brute_force),
         cmocka_unit_test(test_signed_depth_vs_global),
+        cmocka_unit_test(test_signed_deep_overlap_enumerated),
         cmocka_unit_test(test_signed_properties),    cmocka_unit_test(test_signed_hand_made),
         cmocka_unit_test(test_support_generic_shapes),
         cmocka_unit_test(test_support_near_touching),

@@ -13,7 +13,9 @@
  *   F(t) = A(t)^2 R(t) - r^2 (A(t)(1 + t^2) + dn(t) B(t))^2 = 0, degree 8, with A = C.P',
  *   B = N.P', R = rho^2, each trig-linear factor k0 + kc cos + ks sin written as
  *   k0 (1 + t^2) + kc (1 - t^2) + 2 ks t.
- * Squaring adds the stationary points of the far-point distance; those are filtered by |h|.
+ * Squaring adds the stationary points of the far-point distance; those are filtered by |h|. A circle
+ * b of negative radius -r turns g into the far-point distance (rho + r)^2 + dn^2 with the same
+ * polynomial: its stationary points are those the filter keeps then.
  * Every root (and the starts 0, pi/2, pi, 3pi/2, which cover th = pi, sent to infinity by t) is
  * polished by safeguarded Newton on h. */
 #include "core/angle.h"
@@ -49,7 +51,7 @@ static cc_prob cc_make(const prox_fcircle *a, const prox_fcircle *b)
     p.nx /= nn, p.ny /= nn, p.nz /= nn;
     p.r = b->r * ir;
     p.kx = p.cy * p.nz - p.cz * p.ny, p.ky = p.cz * p.nx - p.cx * p.nz, p.kz = p.cx * p.ny - p.cy * p.nx;
-    p.scale = 1.0 + sqrt(p.cx * p.cx + p.cy * p.cy + p.cz * p.cz) + p.r;
+    p.scale = 1.0 + sqrt(p.cx * p.cx + p.cy * p.cy + p.cz * p.cz) + fabs(p.r);
     return p;
 }
 

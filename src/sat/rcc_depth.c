@@ -13,7 +13,9 @@
  *            rim circles, and phi(D*) = |p1 - p2|. A critical pair where p2 is the closest point of
  *            B's rim to p1 is a stationary point of dist^2(point of A's rim, B's rim) (Agarwal Sec.
  *            3.5, prox_circle_circle_stationary); with p1 closest to p2 the same with A and B
- *            swapped; the remaining (farthest, farthest) pairs have |p1 - p2|^2 >= |p1 - cB|^2 + rB^2.
+ *            swapped; the remaining (farthest, farthest) pairs have |p1 - p2|^2 >= |p1 - cB|^2 + rB^2,
+ *            and where that bound does not exceed the best (deep overlaps) they are solved too: the
+ *            stationary points of the far-point distance (dp_cells_far).
  * Cells are excluded by lower bounds of the circle-circle distance (centres, planes, spheres), then
  * by a certified scan of the rim's angle (dp_cell_may: the normal-cone, value and stationarity
  * conditions of a cell minimiser, each bounded over an interval by its Lipschitz constant); only a
@@ -215,6 +217,32 @@ static int dp_cells_closest(dp_state *s, const prox_fcircle *a, const prox_fcirc
     return 1;
 }
 
+/* Critical pairs of one circle pair where the point of `b` is the FARTHEST of b from the point of
+ * `a`: the stationary points on `a` of the far-point distance (the core's solver with b's radius
+ * negated: the same degree-8 polynomial, the roots its closest-point filter drops), each partner the
+ * point of b opposite the closest one. With dp_cells_closest(a, b) they give every critical pair of
+ * |p_a - p_b|^2 over the two rims (the partner of a point on a circle is its closest or farthest
+ * point there). Returns as dp_cells_closest. */
+static int dp_cells_far(dp_state *s, const prox_fcircle *a, const prox_fcircle *b)
+{
+    prox_fcircle bn = *b;
+    bn.r = -b->r;
+    double th[8];
+    int cnt = 0;
+    int rc = dp_cc_stationary(a, &bn, th, &cnt);
+    if (rc < 0) return rc;
+    if (rc != 0) return 0;
+    for (int i = 0; i < cnt; ++i) {
+        int deg = 0;
+        prox_vec3 pa = prox_fcircle_point(a, th[i]), pc = prox_fcircle_closest(b, pa, &deg);
+        if (deg) return 0;
+        prox_vec3 pb = prox_v3_sub(prox_v3_scale(b->c, 2.0), pc);
+        dp_consider_pm(s, prox_v3_sub(pa, pb));
+        dp_consider_pm(s, prox_v3_cross(dp_tangent(a, pa), dp_tangent(b, pb)));
+    }
+    return 1;
+}
+
 /* One cell's parametrised rim x(theta) (circle P of body kp at end ep) against rim Q of body kq at
  * end eq, for the certified exclusion below. */
 typedef struct dp_cell {
@@ -339,15 +367,18 @@ int sup_rcc_depth_enum(const prox_body *a, const prox_body *b, prox_signed_resul
             if (!dp_reach(&cb, a, ea, s.best, tol) || !dp_reach(&ca, b, eb, s.best, tol)) continue;
             /* pairs with p2 closest on B's rim to p1: stationary points on A's rim (one degree-8
              * solve); with p1 closest on A's rim: on B's rim. The rest has p1 farthest (>= far_a)
-             * or p2 farthest (>= far_b): one solve suffices when either bound exceeds the best. */
+             * or p2 farthest (>= far_b): one solve suffices when either bound exceeds the best;
+             * else two, the closest and the farthest partners of A's rim points. */
             if (far_a > cut) {
                 if (!dp_cell_may(&cb, b, eb, &ca, a, ea, cut, tol)) continue;
                 ok = dp_cells_closest(&s, &cb, &ca);
             } else if (far_b > cut) {
                 if (!dp_cell_may(&ca, a, ea, &cb, b, eb, cut, tol)) continue;
                 ok = dp_cells_closest(&s, &ca, &cb);
-            } else
-                ok = 0;
+            } else { /* a deep overlap: both kinds of partner on B's rim, no bound to skip either */
+                ok = dp_cells_closest(&s, &ca, &cb);
+                if (ok == 1) ok = dp_cells_far(&s, &ca, &cb);
+            }
             if (ok < 0) return ok; /* a circle solver failed: PROX_ENUMERIC for the caller */
         }
     res->status = PROX_OK;
