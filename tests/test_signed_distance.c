@@ -5,6 +5,7 @@
  * cases, a long-double brute force on random pairs, and other shape kinds. */
 #include "test_util.h"
 
+#include <float.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -228,6 +229,39 @@ static void test_signed_deep_overlap_enumerated(void **state)
     assert_int_equal(uncertified, 0);
 }
 
+/* An end disk pressed 2e-4 deep into a side line tilted under 1e-9 rad from it (stress_public pair
+ * 607, under 24 random rigid motions): the side line's support set along the normal is the whole
+ * line, whose far end sits the tilt times its length off the supporting plane. The witnesses must
+ * still give p2 - p1 = sd normal to 1e-12 S (plus the rounding of the moved input) and lie in their
+ * solids. */
+static void test_signed_face_against_tilted_side(void **state)
+{
+    (void)state;
+    const prox_rcc a0 = {prox_v3(-3.0733140026246022, -0.10889632572799132, 2.3779112806176173),
+                         prox_v3(1.6307633128386183, -0.27444358094806948, -1.1361601242283492), 1.0307153374155913};
+    const prox_rcc b0 = {prox_v3(-0.82384867017326735, -1.3985079585502382, 1.377982663849026),
+                         prox_v3(0.40055983968650538, 0.51005644742162493, 0.45172908422611024), 0.56479687110367061};
+    test_rng g = test_rng_seed(607);
+    for (int k = 0; k < 25; ++k) {
+        prox_rcc a = a0, b = b0;
+        if (k > 0) {
+            test_rot R = test_random_rot(&g);
+            prox_vec3 t = prox_v3_scale(test_unit(&g), test_range(&g, 0.0, 10.0));
+            a.base = prox_v3_add(test_rot_apply(&R, a0.base), t), a.axis = test_rot_apply(&R, a0.axis);
+            b.base = prox_v3_add(test_rot_apply(&R, b0.base), t), b.axis = test_rot_apply(&R, b0.axis);
+        }
+        prox_signed_result r = prox_rcc_signed_distance(&a, &b);
+        double S = prox_rcc_pair_scale(&a, &b), tol = 1e-12 * S + 64.0 * DBL_EPSILON * 20.0;
+        assert_int_equal(r.status, PROX_OK);
+        assert_near(r.sd, -0.00020737898480452873, 1e-9 * S);
+        double e = prox_v3_dist(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd));
+        if (e > tol) print_error("motion %d: residual %.3g S\n", k, e / S);
+        assert_true(e <= tol);
+        assert_true(prox_rcc_contains_point(&a, r.p1, tol));
+        assert_true(prox_rcc_contains_point(&b, r.p2, tol));
+    }
+}
+
 static prox_vec3 rot_apply_pt(const test_rot *R, prox_vec3 p, prox_vec3 t) { return prox_v3_add(test_rot_apply(R, p), t); }
 
 static void test_signed_properties(void **state)
@@ -412,6 +446,7 @@ int main(void)
         cmocka_unit_test(test_signed_stress_public), cmocka_unit_test(test_signed_brute_force),
         cmocka_unit_test(test_signed_depth_vs_global),
         cmocka_unit_test(test_signed_deep_overlap_enumerated),
+        cmocka_unit_test(test_signed_face_against_tilted_side),
         cmocka_unit_test(test_signed_properties),    cmocka_unit_test(test_signed_hand_made),
         cmocka_unit_test(test_support_generic_shapes),
         cmocka_unit_test(test_support_near_touching),

@@ -871,6 +871,26 @@ static prox_vec3 disjoint_witnesses(const sup_search *s, prox_vec3 d0, double sd
     return n;
 }
 
+/* The witnesses of a support set's extreme point: y = B's support point along -n (on B's supporting
+ * plane exactly) and x = y - sd n on A's supporting plane, kept when x lies in A; or the same from
+ * A's side. Then p2 - p1 = sd n holds to rounding. It settles a face against a side line tilted by
+ * 1e-9 rad, where a point of the side line's support set (faces within PROX_TOL_FACE) sits off the
+ * supporting plane by the tilt times its length. Replaces res's pair when it is in the solids and
+ * better than the residual `best`. */
+static void overlap_exact_pair(const prox_body *a, const prox_body *b, double scale, double best, prox_signed_result *res)
+{
+    prox_vec3 n = res->normal;
+    double sd = res->sd, tol = PROX_TOL_TOUCH * scale;
+    for (int side = 0; side < 2; ++side) {
+        prox_vec3 x, y;
+        if (side == 0) y = prox_body_support_point(b, prox_v3_neg(n)), x = prox_v3_mad(y, -sd, n);
+        else x = prox_body_support_point(a, n), y = prox_v3_mad(x, sd, n);
+        if (!prox_body_contains(a, x, tol) || !prox_body_contains(b, y, tol)) continue;
+        double e = prox_v3_norm(prox_v3_mad(prox_v3_sub(y, x), -sd, n));
+        if (e < best) best = e, res->p1 = x, res->p2 = y;
+    }
+}
+
 void sup_overlap_answer(const prox_body *a, const prox_body *b, prox_vec3 n0, prox_signed_result *res)
 {
     sup_search s = {.a = a, .b = b, .delta = prox_v3_sub(b->c, a->c), .best_phi = INFINITY};
@@ -900,6 +920,7 @@ void sup_overlap_answer(const prox_body *a, const prox_body *b, prox_vec3 n0, pr
         if (e < best) best = e, res->sd = -f, res->normal = nk, res->p1 = x, res->p2 = y;
         if (best <= PROX_TOL_SEARCH * s.scale) return; /* exact to rounding: no other candidate can matter */
     }
+    overlap_exact_pair(a, b, s.scale, best, res);
 }
 
 /* The result from the best direction found. */
