@@ -20,6 +20,7 @@ static inline prox_signed_result prox_signed_from_disjoint(const prox_distance_r
     r.p1 = d->p1;
     r.p2 = d->p2;
     r.sd_lower = d->certified ? d->certificate_gap : 0.0; /* the duality certificate, if any */
+    r.certified = d->certified;
     return r;
 }
 

@@ -31,6 +31,7 @@ static prox_signed_result box_rcc_signed(const prox_box *a, const prox_rcc *b)
         r.p1 = d.p1;
         r.p2 = d.p2;
     r.sd_lower = d.certified ? d.certificate_gap : 0.0; /* the duality certificate */
+    r.certified = d.certified;
         return r;
     }
     /* overlapping: minimum of h_A(D) + h_B(-D) over unit D, every stratum enumerated in closed

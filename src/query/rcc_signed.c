@@ -58,6 +58,7 @@ static prox_signed_result rcc_signed(const prox_rcc *a, const prox_rcc *b)
     r.p1 = d.p1;
     r.p2 = d.p2;
     r.sd_lower = d.certified ? d.certificate_gap : 0.0; /* the duality certificate */
+    r.certified = d.certified;
     if (fabs(prox_v3_dist(d.p1, d.p2) - d.distance) > 0.0) polish_disjoint(a, b, d.distance, &r.p1, &r.p2);
     /* (p2 - p1) / |p2 - p1| is the normal: it makes p2 - p1 = sd n hold to the points' rounding. Its
      * direction carries that rounding, eps |p| / distance, so very near touching it is a supporting

@@ -355,32 +355,43 @@ int sup_rcc_depth_enum(const prox_body *a, const prox_body *b, prox_signed_resul
     /* ridges */
     ok = dp_ridge(&s, a, b, PROX_TOL_SEARCH * scale) && ok;
     ok = dp_ridge(&s, b, a, PROX_TOL_SEARCH * scale) && ok;
-    /* cells: rim of A at end ea against rim of B at end eb */
-    for (int ea = -1; ok && ea <= 1; ea += 2)
-        for (int eb = -1; ok && eb <= 1; eb += 2) {
-            prox_fcircle ca = dp_rim(a, ea), cb = dp_rim(b, eb);
-            double far_a, far_b, lb = dp_circle_lb(&ca, &cb, &far_a, &far_b);
-            double cut = s.best + PROX_TOL_SEARCH * scale; /* a bound within rounding of the best cannot improve it */
-            if (lb > cut) continue;
-            /* A's point on rim ea, B's on rim eb: each must reach the other's corner band */
-            double tol = PROX_TOL_SEARCH * scale;
-            if (!dp_reach(&cb, a, ea, s.best, tol) || !dp_reach(&ca, b, eb, s.best, tol)) continue;
-            /* pairs with p2 closest on B's rim to p1: stationary points on A's rim (one degree-8
-             * solve); with p1 closest on A's rim: on B's rim. The rest has p1 farthest (>= far_a)
-             * or p2 farthest (>= far_b): one solve suffices when either bound exceeds the best;
-             * else two, the closest and the farthest partners of A's rim points. */
-            if (far_a > cut) {
-                if (!dp_cell_may(&cb, b, eb, &ca, a, ea, cut, tol)) continue;
-                ok = dp_cells_closest(&s, &cb, &ca);
-            } else if (far_b > cut) {
-                if (!dp_cell_may(&ca, a, ea, &cb, b, eb, cut, tol)) continue;
-                ok = dp_cells_closest(&s, &ca, &cb);
-            } else { /* a deep overlap: both kinds of partner on B's rim, no bound to skip either */
-                ok = dp_cells_closest(&s, &ca, &cb);
-                if (ok == 1) ok = dp_cells_far(&s, &ca, &cb);
-            }
-            if (ok < 0) return ok; /* a circle solver failed: PROX_ENUMERIC for the caller */
+    /* cells: rim of A at end ea against rim of B at end eb, the lowest bound first (a deep overlap's
+     * best cell then excludes the others) */
+    prox_fcircle rims[4][2];
+    double lbs[4], fars[4][2];
+    int ord[4];
+    for (int k = 0; k < 4; ++k) {
+        rims[k][0] = dp_rim(a, k & 1 ? 1 : -1), rims[k][1] = dp_rim(b, k & 2 ? 1 : -1);
+        lbs[k] = dp_circle_lb(&rims[k][0], &rims[k][1], &fars[k][0], &fars[k][1]);
+        int j = k;
+        for (; j > 0 && lbs[ord[j - 1]] > lbs[k]; --j) ord[j] = ord[j - 1];
+        ord[j] = k;
+    }
+    for (int o = 0; ok && o < 4; ++o) {
+        int k = ord[o], ea = k & 1 ? 1 : -1, eb = k & 2 ? 1 : -1;
+        prox_fcircle ca = rims[k][0], cb = rims[k][1];
+        double far_a = fars[k][0], far_b = fars[k][1], lb = lbs[k];
+        double cut = s.best + PROX_TOL_SEARCH * scale; /* a bound within rounding of the best cannot improve it */
+        if (lb > cut) continue;
+        /* A's point on rim ea, B's on rim eb: each must reach the other's corner band */
+        double tol = PROX_TOL_SEARCH * scale;
+        if (!dp_reach(&cb, a, ea, s.best, tol) || !dp_reach(&ca, b, eb, s.best, tol)) continue;
+        /* pairs with p2 closest on B's rim to p1: stationary points on A's rim (one degree-8
+         * solve); with p1 closest on A's rim: on B's rim. The rest has p1 farthest (>= far_a)
+         * or p2 farthest (>= far_b): one solve suffices when either bound exceeds the best;
+         * else two, the closest and the farthest partners of A's rim points. */
+        if (far_a > cut) {
+            if (!dp_cell_may(&cb, b, eb, &ca, a, ea, cut, tol)) continue;
+            ok = dp_cells_closest(&s, &cb, &ca);
+        } else if (far_b > cut) {
+            if (!dp_cell_may(&ca, a, ea, &cb, b, eb, cut, tol)) continue;
+            ok = dp_cells_closest(&s, &ca, &cb);
+        } else { /* a deep overlap: both kinds of partner on B's rim, no bound to skip the far one */
+            ok = dp_cell_may(&ca, a, ea, &cb, b, eb, cut, tol) ? dp_cells_closest(&s, &ca, &cb) : 1;
+            if (ok == 1) ok = dp_cells_far(&s, &ca, &cb);
         }
+        if (ok < 0) return ok; /* a circle solver failed: PROX_ENUMERIC for the caller */
+    }
     res->status = PROX_OK;
     res->sd = -s.best;
     res->normal = s.best_d;
