@@ -167,8 +167,6 @@ static prox_status sa_validate(const prox_shape *b, const prox_sph *s, int spher
     return sb != PROX_OK ? sb : prox_sph_validate(s);
 }
 
-static prox_status box_validate_fast(const prox_box *b);
-
 prox_signed_result prox_query_sph_signed(const prox_shape *b, const prox_sph *s, int sphere_first)
 {
     prox_signed_result r;
@@ -176,7 +174,7 @@ prox_signed_result prox_query_sph_signed(const prox_shape *b, const prox_sph *s,
     prox_vec3 q, n;
     double sdp, h2 = 0.0, size;
     if (b->kind == PROX_SHAPE_RCC || b->kind == PROX_SHAPE_BOX) { /* the commonest pairs: no switch */
-        prox_status sb = b->kind == PROX_SHAPE_RCC ? prox_rcc_validate_h2(&b->u.rcc, &h2) : box_validate_fast(&b->u.box);
+        prox_status sb = b->kind == PROX_SHAPE_RCC ? prox_rcc_validate_h2(&b->u.rcc, &h2) : prox_box_validate(&b->u.box);
         prox_status ss = prox_sph_validate(s);
         st = sphere_first ? (ss != PROX_OK ? ss : sb) : (sb != PROX_OK ? sb : ss);
     } else {
@@ -289,33 +287,12 @@ static prox_distance_result box_lean(const prox_box *b, const prox_sph *s)
     return sa_disjoint(q, dist, s, h_n, n);
 }
 
-/* The box validator's answer at the cost of a few products: every edge's squared length well inside
- * the supported range, where the orthogonality test |e_i.e_j| <= tol |e_i| |e_j| can be squared; a
- * box near any limit (or within 1 % of the orthogonality tolerance) goes to prox_box_validate. */
-static prox_status box_validate_fast(const prox_box *b)
-{
-    if (!b) return PROX_EINVAL_ARG;
-    double ee[3];
-    int ok = fabs(b->corner.x) <= PROX_MAX_COORD && fabs(b->corner.y) <= PROX_MAX_COORD &&
-             fabs(b->corner.z) <= PROX_MAX_COORD;
-    for (int k = 0; k < 3; ++k) {
-        ee[k] = prox_v3_norm2(b->edge[k]);
-        ok &= ee[k] >= 1e-140 && ee[k] <= 1e140;
-    }
-    for (int i = 0; ok && i < 3; ++i) {
-        int j = (i + 1) % 3;
-        double c = prox_v3_dot(b->edge[i], b->edge[j]), lim = PROX_BOX_ORTHO_TOL * PROX_BOX_ORTHO_TOL * ee[i] * ee[j];
-        ok &= c * c <= 0.98 * lim;
-    }
-    return ok ? PROX_OK : prox_box_validate(b);
-}
-
 prox_distance_result prox_query_sph_distance(const prox_shape *b, const prox_sph *s, int sphere_first)
 {
     prox_distance_result r = {0};
     if (b->kind == PROX_SHAPE_RCC || b->kind == PROX_SHAPE_BOX) {
         double h2 = 0.0;
-        prox_status sb = b->kind == PROX_SHAPE_RCC ? prox_rcc_validate_h2(&b->u.rcc, &h2) : box_validate_fast(&b->u.box);
+        prox_status sb = b->kind == PROX_SHAPE_RCC ? prox_rcc_validate_h2(&b->u.rcc, &h2) : prox_box_validate(&b->u.box);
         prox_status ss = prox_sph_validate(s);
         r.status = sphere_first ? (ss != PROX_OK ? ss : sb) : (sb != PROX_OK ? sb : ss);
         if (r.status != PROX_OK) return r;
