@@ -130,7 +130,7 @@ static inline int prox_bframe_clip_segment(const prox_bframe *f, prox_vec3 p, pr
             if (lp[k] < a || lp[k] > b) return 0;
             continue;
         }
-        double t0 = (a - lp[k]) / d, t1 = (b - lp[k]) / d;
+        double inv = 1.0 / d, t0 = (a - lp[k]) * inv, t1 = (b - lp[k]) * inv; /* one division per slab */
         if (t0 > t1) {
             double t = t0;
             t0 = t1;
