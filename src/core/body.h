@@ -121,7 +121,8 @@ double prox_body_boundary(const prox_body *b, prox_vec3 x, prox_vec3 *q);
 /* Sets the proved enclosure of a signed answer (r->sd_lower, sd_upper, certified; result.h) for A and
  * B given as bodies. On entry r->certified = 1 says the method proved its depth (overlapping pairs),
  * a negative r->sd_upper is the method's own proved bound when it has one (a covering), and a positive
- * r->sd_lower of a disjoint answer is the method's duality certificate (certificate_gap). */
+ * r->sd_lower of a disjoint answer is the method's duality certificate (certificate_gap), a negative
+ * one of an overlapping answer -phi at the method's best direction (both lower bounds of sd). */
 void prox_body_signed_bounds(const prox_body *a, const prox_body *b, prox_signed_result *r);
 /* The enclosure of a closed-form answer (a sphere against anything: the exact point distance, whose
  * gap along its normal and whose witnesses' separation are sd itself): sd within its rounding,

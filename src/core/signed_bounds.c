@@ -45,6 +45,9 @@ void prox_body_signed_bounds(const prox_body *a, const prox_body *b, prox_signed
         r->certified = r->sd_upper - r->sd_lower <= PROX_TOL_TOUCH * S;
         return;
     }
+    /* a method's -phi at its own best direction (the normal reported may be a witness-consistent
+     * neighbour whose overlap is larger) */
+    if (method_lower < 0.0 && method_lower <= r->sd + err) r->sd_lower = fmax(r->sd_lower, fmin(method_lower - err, r->sd));
     r->sd_upper = 0.0;
     if (proved) r->sd_upper = fmax(r->sd + err, method_upper < 0.0 ? method_upper : r->sd + err);
     r->sd_upper = fmin(r->sd_upper, 0.0);

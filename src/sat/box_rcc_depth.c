@@ -299,6 +299,7 @@ int sup_box_cyl_depth_enum(const prox_body *a, const prox_body *b, prox_signed_r
     res->normal = s.best_d;
     if (!ok || !(s.best > 0.0)) return 0;
     sup_overlap_answer(a, b, s.best_d, res);
+    res->sd_lower = -s.best; /* -phi at the best direction: a lower bound of sd (weak duality) */
     res->certified = 1; /* every stratum enumerated or bounded: the depth is proved (prox_body_signed_bounds) */
     return 1;
 }

@@ -397,6 +397,7 @@ int sup_rcc_depth_enum(const prox_body *a, const prox_body *b, prox_signed_resul
     res->normal = s.best_d;
     if (!ok || !(s.best > 0.0)) return 0; /* touching band or an unsettled stratum: global search */
     sup_overlap_answer(a, b, s.best_d, res);
+    res->sd_lower = -s.best; /* -phi at the best direction: a lower bound of sd (weak duality) */
     res->certified = 1; /* every stratum enumerated: the depth is proved (prox_body_signed_bounds) */
     return 1;
 }
