@@ -251,13 +251,17 @@ typedef struct dp_cell {
     double cut, tol;
     double lq; /* bound of |q - c_P| + r_P: the turn rate of f[4] from its direction u_P */
     int budget; /* evaluations left before the scan gives up (the cell is then solved) */
+    int far;    /* q is the farthest point of rim Q from x (dp_cells_far), not the closest */
 } dp_cell;
 
-enum { DP_NCOND = 6 };
+enum { DP_NCOND = 7 };
 
 /* The conditions at x = x(theta), each <= 0 at a cell minimiser (dp_cell_may), q the closest point
  * of rim Q to x: f[0] = rho_Q(x) - r_Q, f[1] = ezq.(x - c_Q), f[2] = |x - q| - cut (1-Lipschitz in
- * x); f[3] = ezp.(q - c_P), f[4] = (q - x).u_P(x) (through q; -inf when x is on Q's axis). */
+ * x); f[3] = ezp.(q - c_P), f[4] = (q - x).u_P(x) (through q; -inf when x is on Q's axis); f[5] the
+ * stationarity (q - x).t_P(x); f[6] = rho_Q(x). With far, q is the farthest point of Q: f[0] (no
+ * radial condition there) is -rho_Q - r_Q <= 0, and |x - q| = sqrt((rho + r_Q)^2 + z^2), again
+ * 1-Lipschitz in x (the largest distance to a set). */
 static void dp_cell_vals(dp_cell *g, double th, double f[DP_NCOND])
 {
     --g->budget;
@@ -267,15 +271,17 @@ static void dp_cell_vals(dp_cell *g, double th, double f[DP_NCOND])
     double z = prox_v3_dot(d, g->ezq);
     prox_vec3 rad = prox_v3_reject(d, g->wq);
     double rho = prox_v3_norm(rad);
-    f[0] = rho - g->q->r;
+    double dr = g->far ? rho + g->q->r : rho - g->q->r;
+    f[0] = g->far ? -dr : dr;
     f[1] = z;
-    f[2] = sqrt(f[0] * f[0] + z * z) - g->cut;
+    f[2] = sqrt(dr * dr + z * z) - g->cut;
+    f[6] = rho;
     if (!(rho > 0.0)) {
         f[3] = f[4] = -INFINITY;
         f[5] = 0.0;
         return;
     }
-    prox_vec3 q = prox_v3_add(g->q->c, prox_v3_scale(rad, g->q->r / rho));
+    prox_vec3 q = prox_v3_add(g->q->c, prox_v3_scale(rad, (g->far ? -g->q->r : g->q->r) / rho));
     f[3] = prox_v3_dot(prox_v3_sub(q, g->p->c), g->ezp);
     f[4] = prox_v3_dot(prox_v3_sub(q, x), ru);
     f[5] = prox_v3_dot(prox_v3_sub(q, x), prox_v3_sub(prox_v3_scale(g->p->v, c), prox_v3_scale(g->p->u, s)));
@@ -291,7 +297,7 @@ static int dp_cell_span(dp_cell *g, double t0, const double *f0, double t1, cons
     double w = t1 - t0, L = g->p->r * w;
     for (int k = 0; k < 3; ++k)
         if (0.5 * (f0[k] + f1[k] - L) > g->tol) return 0;
-    double rho_lo = 0.5 * (f0[0] + f1[0] - L) + g->q->r;
+    double rho_lo = g->far ? 0.5 * (f0[6] + f1[6] - L) : 0.5 * (f0[0] + f1[0] - L) + g->q->r;
     if (rho_lo > 0.0) {
         double Lq = L * g->q->r / rho_lo;
         if (0.5 * (f0[3] + f1[3] - Lq) > g->tol) return 0;
@@ -313,11 +319,13 @@ static int dp_cell_span(dp_cell *g, double t0, const double *f0, double t1, cons
  * x - q (= p1 - p2 when q = p2, = p2 - p1 when q = p1) lies in minus Q's normal cone at q and in P's
  * normal cone at x. Hence dn <= 0 (x on the body side of Q's end plane), rho_Q(x) <= r_Q (x within
  * Q's radius), |x - q| <= cut, e_P w_P.(q - c_P) <= 0 (q on the body side of P's end plane) and
- * (q - x).u_P(x) <= 0. Returns 0 when a grid of the angle of x with the Lipschitz bounds of
+ * (q - x).u_P(x) <= 0. With far, q is the farthest point of Q from x: x - q = dn e_Q w_Q - (rho_Q(x)
+ * + r_Q) u_Q(q) meets the same cones with the radial condition always true, and the other four
+ * conditions stand. Returns 0 when a grid of the angle of x with the Lipschitz bounds of
  * dp_cell_span proves that no point of rim P meets them all: the cell holds no minimiser at or below
  * cut. */
 static int dp_cell_may(const prox_fcircle *p, const prox_body *kp, int ep, const prox_fcircle *q, const prox_body *kq,
-                       int eq, double cut, double tol)
+                       int eq, double cut, double tol, int far)
 {
     enum { N = 8, DEPTH = 12, BUDGET = 256 };
     dp_cell g = {.p = p,
@@ -328,7 +336,8 @@ static int dp_cell_may(const prox_fcircle *p, const prox_body *kp, int ep, const
                  .cut = cut,
                  .tol = tol,
                  .lq = prox_v3_dist(q->c, p->c) + q->r + p->r,
-                 .budget = BUDGET};
+                 .budget = BUDGET,
+                 .far = far};
     double f0[DP_NCOND], fa[DP_NCOND], fb[DP_NCOND];
     dp_cell_vals(&g, 0.0, f0);
     memcpy(fa, f0, sizeof fa);
@@ -367,6 +376,7 @@ int sup_rcc_depth_enum(const prox_body *a, const prox_body *b, prox_signed_resul
         for (; j > 0 && lbs[ord[j - 1]] > lbs[k]; --j) ord[j] = ord[j - 1];
         ord[j] = k;
     }
+    int deferred[4], nd = 0; /* deep cells whose far partners are solved last */
     for (int o = 0; ok && o < 4; ++o) {
         int k = ord[o], ea = k & 1 ? 1 : -1, eb = k & 2 ? 1 : -1;
         prox_fcircle ca = rims[k][0], cb = rims[k][1];
@@ -381,16 +391,26 @@ int sup_rcc_depth_enum(const prox_body *a, const prox_body *b, prox_signed_resul
          * or p2 farthest (>= far_b): one solve suffices when either bound exceeds the best;
          * else two, the closest and the farthest partners of A's rim points. */
         if (far_a > cut) {
-            if (!dp_cell_may(&cb, b, eb, &ca, a, ea, cut, tol)) continue;
+            if (!dp_cell_may(&cb, b, eb, &ca, a, ea, cut, tol, 0)) continue;
             ok = dp_cells_closest(&s, &cb, &ca);
         } else if (far_b > cut) {
-            if (!dp_cell_may(&ca, a, ea, &cb, b, eb, cut, tol)) continue;
+            if (!dp_cell_may(&ca, a, ea, &cb, b, eb, cut, tol, 0)) continue;
             ok = dp_cells_closest(&s, &ca, &cb);
-        } else { /* a deep overlap: both kinds of partner on B's rim, no bound to skip the far one */
-            ok = dp_cell_may(&ca, a, ea, &cb, b, eb, cut, tol) ? dp_cells_closest(&s, &ca, &cb) : 1;
-            if (ok == 1) ok = dp_cells_far(&s, &ca, &cb);
+        } else { /* a deep overlap: both kinds of partner on B's rim; the far ones after every
+                  * other cell, whose values may by then exclude them (far_b > cut) */
+            ok = dp_cell_may(&ca, a, ea, &cb, b, eb, cut, tol, 0) ? dp_cells_closest(&s, &ca, &cb) : 1;
+            deferred[nd++] = k;
         }
         if (ok < 0) return ok; /* a circle solver failed: PROX_ENUMERIC for the caller */
+    }
+    for (int i = 0; ok == 1 && i < nd; ++i) {
+        int k = deferred[i];
+        double cut = s.best + PROX_TOL_SEARCH * scale;
+        int ea = k & 1 ? 1 : -1, eb = k & 2 ? 1 : -1;
+        if (lbs[k] > cut || fars[k][1] > cut) continue;
+        if (!dp_cell_may(&rims[k][0], a, ea, &rims[k][1], b, eb, cut, PROX_TOL_SEARCH * scale, 1)) continue;
+        ok = dp_cells_far(&s, &rims[k][0], &rims[k][1]);
+        if (ok < 0) return ok;
     }
     res->status = PROX_OK;
     res->sd = -s.best;
