@@ -254,7 +254,7 @@ typedef struct dp_cell {
     int far;    /* q is the farthest point of rim Q from x (dp_cells_far), not the closest */
 } dp_cell;
 
-enum { DP_NCOND = 7 };
+enum { DP_NCOND = 7, DP_NVAL = 9 }; /* the conditions, then cos and sin of the angle */
 
 /* The conditions at x = x(theta), each <= 0 at a cell minimiser (dp_cell_may), q the closest point
  * of rim Q to x: f[0] = rho_Q(x) - r_Q, f[1] = ezq.(x - c_Q), f[2] = |x - q| - cut (1-Lipschitz in
@@ -262,10 +262,10 @@ enum { DP_NCOND = 7 };
  * stationarity (q - x).t_P(x); f[6] = rho_Q(x). With far, q is the farthest point of Q: f[0] (no
  * radial condition there) is -rho_Q - r_Q <= 0, and |x - q| = sqrt((rho + r_Q)^2 + z^2), again
  * 1-Lipschitz in x (the largest distance to a set). */
-static void dp_cell_vals(dp_cell *g, double th, double f[DP_NCOND])
+static void dp_cell_vals(dp_cell *g, double c, double s, double f[DP_NVAL])
 {
     --g->budget;
-    double c = cos(th), s = sin(th);
+    f[7] = c, f[8] = s;
     prox_vec3 ru = prox_v3_add(prox_v3_scale(g->p->u, c), prox_v3_scale(g->p->v, s)); /* u_P(x) */
     prox_vec3 x = prox_v3_add(g->p->c, prox_v3_scale(ru, g->p->r)), d = prox_v3_sub(x, g->q->c);
     double z = prox_v3_dot(d, g->ezq);
@@ -294,7 +294,7 @@ static void dp_cell_vals(dp_cell *g, double th, double f[DP_NCOND])
  * intervals are halved `depth` more times while the evaluation budget lasts (undecided: 1). */
 static int dp_cell_span(dp_cell *g, double t0, const double *f0, double t1, const double *f1, int depth)
 {
-    double w = t1 - t0, L = g->p->r * w;
+    double w = t1 - t0 + 64.0 * DBL_EPSILON, L = g->p->r * w;
     for (int k = 0; k < 3; ++k)
         if (0.5 * (f0[k] + f1[k] - L) > g->tol) return 0;
     double rho_lo = g->far ? 0.5 * (f0[6] + f1[6] - L) : 0.5 * (f0[0] + f1[0] - L) + g->q->r;
@@ -307,8 +307,11 @@ static int dp_cell_span(dp_cell *g, double t0, const double *f0, double t1, cons
         if (f0[5] * f1[5] > 0.0 && 0.5 * (fabs(f0[5]) + fabs(f1[5]) - L - Lq - dhi * w) > g->tol) return 0;
     }
     if (depth == 0 || g->budget <= 0) return 1;
-    double tm = 0.5 * (t0 + t1), fm[DP_NCOND];
-    dp_cell_vals(g, tm, fm);
+    /* the middle angle's cos and sin: the normalised sum of the ends' (no trigonometric call; the
+     * interval is at most pi/4, and the angle carries a few ulps, which the 64 eps added to every
+     * width below covers) */
+    double tm = 0.5 * (t0 + t1), fm[DP_NVAL], cm = f0[7] + f1[7], sm = f0[8] + f1[8], nm = prox_hypot2(cm, sm);
+    dp_cell_vals(g, cm / nm, sm / nm, fm);
     return dp_cell_span(g, t0, f0, tm, fm, depth - 1) || dp_cell_span(g, tm, fm, t1, f1, depth - 1);
 }
 
@@ -338,12 +341,12 @@ static int dp_cell_may(const prox_fcircle *p, const prox_body *kp, int ep, const
                  .lq = prox_v3_dist(q->c, p->c) + q->r + p->r,
                  .budget = BUDGET,
                  .far = far};
-    double f0[DP_NCOND], fa[DP_NCOND], fb[DP_NCOND];
-    dp_cell_vals(&g, 0.0, f0);
+    double f0[DP_NVAL], fa[DP_NVAL], fb[DP_NVAL];
+    dp_cell_vals(&g, 1.0, 0.0, f0);
     memcpy(fa, f0, sizeof fa);
     for (int k = 1; k <= N; ++k) {
         double t0 = 2.0 * PROX_PI * (k - 1) / N, t1 = 2.0 * PROX_PI * k / N;
-        if (k < N) dp_cell_vals(&g, t1, fb);
+        if (k < N) dp_cell_vals(&g, cos(t1), sin(t1), fb);
         else memcpy(fb, f0, sizeof fb);
         if (dp_cell_span(&g, t0, fa, t1, fb, DEPTH)) return 1;
         memcpy(fa, fb, sizeof fa);
