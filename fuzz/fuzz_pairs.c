@@ -63,6 +63,9 @@ static void check_pair(const prox_shape *a, const prox_shape *b)
     CHECK(point_gap(b, g.p2, r) <= r);
     CHECK(fabs(prox_v3_norm(g.normal) - 1.0) <= PAIR_SYM_TOL);
     CHECK(prox_v3_norm(prox_v3_sub(prox_v3_sub(g.p2, g.p1), prox_v3_scale(g.normal, g.sd))) <= tol);
+    /* the proved enclosure holds the answer, and a certified one is within the depth bar */
+    CHECK(g.sd_lower <= g.sd && g.sd <= g.sd_upper);
+    if (g.certified) CHECK(g.sd_upper - g.sd_lower <= PAIR_SYM_TOL * S);
 }
 
 /* The binary branch: two shapes of the ten kinds, their pair properties when both are valid. */

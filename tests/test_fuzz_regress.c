@@ -230,6 +230,32 @@ static void test_fuzz_signed_witness_tiny_disk(void **state)
     assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-12 * S);
 }
 
+/* fuzz/crashes/pairs-axis-support-*: an ellipsoid of size 1 at the origin against a cylinder 1e50 away
+ * whose axis points exactly along the line of centres. The cylinder's support point along its axis
+ * took the radial direction from a residual at rounding level that lay along the axis itself, which
+ * put the point r beyond the base disk: the distance witness p2 lay 7.7e49 outside B and the distance
+ * came out 5.6e49 instead of 1.33e50. The support point along the axis is the disk's centre. */
+static void test_fuzz_axis_support_point(void **state)
+{
+    (void)state;
+    const double v = 7.6846329228755865e+49;
+    prox_shape a = prox_shape_from_ell((prox_ell){prox_v3(5.4322263344105125e-312, 0, 2.2652729467712475e-309),
+                                                   prox_v3(0, 2.6524947387065904e-315, 2), 1.0});
+    prox_shape b = prox_shape_from_rcc((prox_rcc){prox_v3(v, v, v), prox_v3(v, v, v), v});
+    assert_int_equal(prox_shape_validate(&a), PROX_OK);
+    assert_int_equal(prox_shape_validate(&b), PROX_OK);
+    double S = prox_shape_pair_scale(&a, &b), r0 = 1e-12 * S;
+    prox_distance_result d = prox_shape_distance(&a, &b);
+    assert_int_equal(d.status, PROX_OK);
+    assert_near(d.distance, sqrt(3.0) * v, 1e-12 * S); /* the ellipsoid is 1e-50 of it */
+    prox_shape ba = prox_shape_from_sph((prox_sph){d.p1, r0}), bb = prox_shape_from_sph((prox_sph){d.p2, r0});
+    assert_true(prox_shape_distance(&a, &ba).distance <= r0);
+    assert_true(prox_shape_distance(&b, &bb).distance <= r0);
+    prox_signed_result g = prox_shape_signed_distance(&a, &b);
+    assert_near(g.sd, sqrt(3.0) * v, 1e-12 * S);
+    assert_true(g.sd_lower <= g.sd && g.sd <= g.sd_upper);
+}
+
 /* fuzz/crashes/pairs-needle-wed-*, pairs-flat-rhp-rcc-*: a wedge whose triangle sides were 1e-19 of its
  * height and hexagonal plates 1e-23 to 1e-110 as thick as wide gave order-dependent, wrong distances.
  * Such bodies lie outside the supported aspect ratio (PROX_MAX_ASPECT, shapes.h) and are named
@@ -279,6 +305,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_sph_rcc_subnormal_normal),
         cmocka_unit_test(test_fuzz_degenerate_aspect),
         cmocka_unit_test(test_fuzz_signed_witness_tiny_disk),
+        cmocka_unit_test(test_fuzz_axis_support_point),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
