@@ -278,4 +278,16 @@
  * were (not bounded: undecided). */
 #define PROX_TOL_LAT_PLANES 1e-9
 
+/* Polytope depth axes (src/distance/poly_pairs.c): an edge pair's Gauss-map arc test (triple products
+ * of unit face normals, rounded by a few ulps) decides only when every sign clears PROX_TOL_GAUSS_ARC;
+ * a pair too close to tell keeps its axis, evaluated by the full supports, so no Minkowski facet is
+ * lost to rounding. */
+#define PROX_TOL_GAUSS_ARC 1e-9
+
+/* An edge pair whose arcs clearly cross takes its separation from the two edges' corners (O(1)) when
+ * the edges' sine is at least PROX_TOL_GAUSS_AXIS: the unit cross product then carries at most
+ * ~eps / 1e-3 = 2e-13 rad of rounding, far inside the arc margin, so it stays inside both normal cones
+ * and the corners are the supports. Nearer-parallel pairs are evaluated by the full supports. */
+#define PROX_TOL_GAUSS_AXIS 1e-3
+
 #endif

@@ -23,6 +23,29 @@ prox_distance_result prox_poly_distance(const prox_polytope *a, prox_vec3 ca, co
  * the two support features along that normal: p2 - p1 = sd normal, p1 on A's boundary, p2 on B's. */
 prox_signed_result prox_poly_signed(const prox_polytope *a, prox_vec3 ca, const prox_polytope *b, prox_vec3 cb);
 
+/* The same answers by the exhaustive method alone (feature enumeration, every separating axis), with
+ * no GJK fast path: the reference the fast path is tested against. */
+prox_distance_result prox_poly_distance_exhaustive(const prox_polytope *a, prox_vec3 ca, const prox_polytope *b,
+                                                   prox_vec3 cb);
+prox_signed_result prox_poly_signed_exhaustive(const prox_polytope *a, prox_vec3 ca, const prox_polytope *b,
+                                               prox_vec3 cb);
+
+/* GJK on two corner sets (distance/poly_gjk.c): the closest point of A - B to the origin as the
+ * convex combination sum l[k] (va[ia[k]] - vb[ib[k]]) of n <= 4 corner pairs. dir: a first search
+ * direction (from A towards B); S the pair's scale; touch: a closest point nearer the origin than
+ * touch counts as overlap. Returns PROX_GJK_DISJOINT (converged, uncertified), PROX_GJK_OVERLAP (the
+ * simplex encloses the origin or comes within touch of it) or PROX_GJK_FAIL (no convergence). */
+typedef struct prox_gjk_simplex {
+    int n;
+    int ia[4], ib[4];
+    double l[4];
+} prox_gjk_simplex;
+
+enum { PROX_GJK_FAIL = 0, PROX_GJK_DISJOINT = 1, PROX_GJK_OVERLAP = 2 };
+
+int prox_gjk_polytopes(const prox_vec3 *va, int na, const prox_vec3 *vb, int nb, prox_vec3 dir, double S, double touch,
+                       prox_gjk_simplex *out);
+
 /* BOX-BOX on prepared frames (core/box.h): the fast paths behind prox_box_box_distance and
  * prox_box_box_signed_distance, for callers that already hold the frames (scenes, dispatch). */
 prox_distance_result prox_box_pair_distance(const prox_bframe *A, const prox_bframe *B);

@@ -12,7 +12,16 @@
  *
  * Disjoint solids: the closest pair of two convex polytopes can be chosen vertex-face, face-vertex or
  * edge-edge, so the least of those distances is exact; candidates are skipped by the lower bound of
- * their projections on a separating axis. Certificate: s(n) at n = (p2 - p1) / |p2 - p1|. */
+ * their projections on a separating axis. Certificate: s(n) at n = (p2 - p1) / |p2 - p1|.
+ *
+ * Fast path (tried first; the enumeration above is its exact fallback): GJK on the corners
+ * (poly_gjk.c) gives p1 and p2 as convex combinations of corners; a disjoint answer is accepted only
+ * when the gap s(n) along their direction (or their features' contact direction) proves it to
+ * PROX_TOL_CERT S, an overlap only when the common point lies in both solids to PROX_TOL_TOUCH S. The
+ * depth of an overlapping pair keeps every candidate axis that can matter: all face normals (the
+ * support loop stops once an axis cannot come within the touch band of the best so far) and the edge
+ * pairs whose Gauss-map arcs cross (Gregorius, GDC 2013): only those cross products are facet normals
+ * of B - A, and their separation is read off the two edges' corners. */
 #include <math.h>
 #include <stddef.h>
 
@@ -30,12 +39,20 @@ typedef struct placed {
 
 /* Corners and planes moved by off and multiplied by u (a power of two: exact), so that the pair's
  * scale becomes 1 .. 2 and no product of the solvers over- or underflows (a segment pair's |d1|^2 |d2|^2
- * at sizes 1e-90 is 1e-360). */
+ * at sizes 1e-90 is 1e-360). The edge directions wait for place_dirs (only the enumeration needs them). */
 static void place(placed *P, const prox_polytope *p, prox_vec3 off, double u)
 {
     P->p = p;
     for (int i = 0; i < p->nv; ++i) P->v[i] = prox_v3_scale(prox_v3_add(p->v[i], off), u);
     for (int f = 0; f < p->nf; ++f) P->d[f] = (p->d[f] + prox_v3_dot(p->n[f], off)) * u;
+    P->nu = -1;
+}
+
+/* The distinct unit edge directions of a placed polytope (once). */
+static void place_dirs(placed *P)
+{
+    if (P->nu >= 0) return;
+    const prox_polytope *p = P->p;
     P->nu = 0;
     for (int e = 0; e < p->ne; ++e) {
         prox_vec3 w = prox_v3_normalize(prox_v3_sub(p->v[p->e[e][1]], p->v[p->e[e][0]]));
@@ -45,18 +62,37 @@ static void place(placed *P, const prox_polytope *p, prox_vec3 off, double u)
     }
 }
 
+/* Support values by comparison (fmax is a library call that the hot loops cannot afford). */
 static double hmax(const placed *P, prox_vec3 n)
 {
     double m = prox_v3_dot(n, P->v[0]);
-    for (int i = 1; i < P->p->nv; ++i) m = fmax(m, prox_v3_dot(n, P->v[i]));
+    for (int i = 1; i < P->p->nv; ++i) {
+        double t = prox_v3_dot(n, P->v[i]);
+        m = t > m ? t : m;
+    }
     return m;
 }
 
 static double hmin(const placed *P, prox_vec3 n)
 {
     double m = prox_v3_dot(n, P->v[0]);
-    for (int i = 1; i < P->p->nv; ++i) m = fmin(m, prox_v3_dot(n, P->v[i]));
+    for (int i = 1; i < P->p->nv; ++i) {
+        double t = prox_v3_dot(n, P->v[i]);
+        m = t < m ? t : m;
+    }
     return m;
+}
+
+/* Both ends of P's projection on n. */
+static void hrange(const placed *P, prox_vec3 n, double *lo, double *hi)
+{
+    double a = prox_v3_dot(n, P->v[0]), b = a;
+    for (int i = 1; i < P->p->nv; ++i) {
+        double t = prox_v3_dot(n, P->v[i]);
+        a = t < a ? t : a;
+        b = t > b ? t : b;
+    }
+    *lo = a, *hi = b;
 }
 
 /* s(n) = min_B n.y - max_A n.x. */
@@ -595,6 +631,207 @@ static int fast_path(const placed *A, const placed *B, prox_vec3 cb, double S, p
     return 0;
 }
 
+/* ---- GJK fast path: corner pairs, duality certificate ---- */
+
+/* p1 = sum l_k a_(i_k) in A and p2 = sum l_k b_(j_k) in B from GJK's simplex. */
+static void gjk_points(const placed *A, const placed *B, const prox_gjk_simplex *g, prox_vec3 *p1, prox_vec3 *p2)
+{
+    *p1 = *p2 = prox_v3(0, 0, 0);
+    for (int k = 0; k < g->n; ++k) {
+        *p1 = prox_v3_mad(*p1, g->l[k], A->v[g->ia[k]]);
+        *p2 = prox_v3_mad(*p2, g->l[k], B->v[g->ib[k]]);
+    }
+}
+
+/* GJK on the corners from B's reference point direction D: 1 = a common point (r->p1 = r->p2, in
+ * both solids to PROX_TOL_TOUCH S), 2 = disjoint with the distance proved by the gap along the
+ * witnesses' direction (or their features' contact direction) to PROX_TOL_CERT S, 0 = undecided. */
+static int gjk_path(const placed *A, const placed *B, prox_vec3 D, double S, prox_distance_result *r)
+{
+    prox_gjk_simplex g;
+    double tol = PROX_TOL_TOUCH * S;
+    int st = prox_gjk_polytopes(A->v, A->p->nv, B->v, B->p->nv, D, S, tol, &g);
+    if (st == PROX_GJK_FAIL) return 0;
+    prox_vec3 p1, p2;
+    gjk_points(A, B, &g, &p1, &p2);
+    if (st == PROX_GJK_OVERLAP) {
+        prox_vec3 x = prox_v3_scale(prox_v3_add(p1, p2), 0.5);
+        if (!contains(A, x, tol) || !contains(B, x, tol)) return 0;
+        r->intersect = 1;
+        r->p1 = r->p2 = x;
+        r->certified = 1;
+        return 1;
+    }
+    double d = prox_v3_dist(p1, p2);
+    if (!(d > 0.0)) return 0;
+    prox_vec3 n = prox_v3_scale(prox_v3_sub(p2, p1), 1.0 / d);
+    double gap = sep(A, B, n);
+    if (d - gap > PROX_TOL_CERT * S) gap = fmax(gap, pair_gap(A, B, p1, p2, n, S));
+    if (!(d - gap <= PROX_TOL_CERT * S)) return 0;
+    r->distance = d;
+    r->p1 = p1;
+    r->p2 = p2;
+    r->certificate_gap = gap;
+    r->certified = 1;
+    return 2;
+}
+
+/* ---- overlapping: the depth axes without the hopeless ones ---- */
+
+/* Gauss-map arc tables of the edges (Gregorius, "The Separating Axis Test between Convex Polyhedra",
+ * GDC 2013): A's edge i between faces a, b has the arc from n_a to n_b; B's edge j between faces c, d
+ * the arc from -n_c to -n_d (B enters the difference negated). The cross product of the two edges is a
+ * facet normal of B - A only when the arcs cross: sign(c.(b x a)) != sign(d.(b x a)), sign(a.(d x c))
+ * != sign(b.(d x c)) and sign(c.(b x a)) = sign(b.(d x c)) (the crossing, not its antipode). */
+typedef struct arcs {
+    double ta[PROX_POLY_MAXE][PROX_POLY_MAXF]; /* -n_g(B) . (n_b x n_a) of A's edge i */
+    double tb[PROX_POLY_MAXE][PROX_POLY_MAXF]; /* n_f(A) . (n_d x n_c) of B's edge j */
+    unsigned pa[PROX_POLY_MAXE], na[PROX_POLY_MAXE]; /* B's faces with ta clearly > 0, clearly < 0 */
+    unsigned pb[PROX_POLY_MAXE], nb[PROX_POLY_MAXE]; /* A's faces with tb clearly > 0, clearly < 0 */
+    unsigned fa[PROX_POLY_MAXE], fb[PROX_POLY_MAXE]; /* the two faces of each edge of A, of B */
+} arcs;
+
+static void arc_row(const prox_polytope *q, prox_vec3 axis, double sign, double *t, unsigned *pos, unsigned *neg)
+{
+    unsigned p = 0, m = 0;
+    axis = prox_v3_scale(axis, sign);
+    for (int g = 0; g < q->nf; ++g) {
+        double v = prox_v3_dot(q->n[g], axis);
+        t[g] = v;
+        p |= (unsigned)(v > PROX_TOL_GAUSS_ARC) << g;
+        m |= (unsigned)(v < -PROX_TOL_GAUSS_ARC) << g;
+    }
+    *pos = p, *neg = m;
+}
+
+static void arc_tables(const prox_polytope *a, const prox_polytope *b, arcs *T)
+{
+    for (int i = 0; i < a->ne; ++i) {
+        arc_row(b, prox_v3_cross(a->n[a->ef[i][1]], a->n[a->ef[i][0]]), -1.0, T->ta[i], &T->pa[i], &T->na[i]);
+        T->fa[i] = (1u << a->ef[i][0]) | (1u << a->ef[i][1]);
+    }
+    for (int j = 0; j < b->ne; ++j) {
+        arc_row(a, prox_v3_cross(b->n[b->ef[j][1]], b->n[b->ef[j][0]]), 1.0, T->tb[j], &T->pb[j], &T->nb[j]);
+        T->fb[j] = (1u << b->ef[j][0]) | (1u << b->ef[j][1]);
+    }
+}
+
+/* Arc test of A's edge i against B's edge j with the margin PROX_TOL_GAUSS_ARC on every sign:
+ * 1 the arcs cross, -1 they do not, 0 too close to tell (the axis is then taken by its supports). */
+static int arcs_cross(const prox_polytope *a, const prox_polytope *b, const arcs *T, int i, int j)
+{
+    unsigned cd = T->fb[j], ab = T->fa[i];
+    if ((T->pa[i] & cd) == cd || (T->na[i] & cd) == cd || (T->pb[j] & ab) == ab || (T->nb[j] & ab) == ab) return -1;
+    if (((T->pa[i] | T->na[i]) & cd) != cd || ((T->pb[j] | T->nb[j]) & ab) != ab) return 0;
+    return T->ta[i][b->ef[j][0]] * T->tb[j][a->ef[i][1]] > 0.0 ? 1 : -1;
+}
+
+/* 1 when the arcs of A's edge i and B's edge j clearly do not meet: both faces of one edge clearly on
+ * one side of the other edge's great circle (the first two conditions of arcs_cross, inline). */
+static inline int arcs_apart(const arcs *T, int i, int j)
+{
+    unsigned cd = T->fb[j], ab = T->fa[i];
+    return (T->pa[i] & cd) == cd || (T->na[i] & cd) == cd || (T->pb[j] & ab) == ab || (T->nb[j] & ab) == ab;
+}
+
+/* Separation along a face normal n with A's support value ha, or -INFINITY once B's running minimum
+ * shows it stays below floor (it cannot come within the touch band of the best axis). */
+static double face_sep(const placed *P, prox_vec3 n, double ha, double floor)
+{
+    double m = INFINITY;
+    for (int i = 0; i < P->p->nv; ++i) {
+        double t = prox_v3_dot(n, P->v[i]);
+        m = t < m ? t : m;
+        if (m - ha < floor) return -INFINITY;
+    }
+    return m - ha;
+}
+
+/* The edge pair's axis (the unit cross product, oriented from A towards B) and its separation: by the
+ * two edges' corners when the arcs cross clearly and the edges are far from parallel (the axis then
+ * lies inside both normal cones: A's maximum and B's minimum are at the edges), by the supports when
+ * undecided. Returns 0 for parallel edges, pairs whose arcs do not cross, and corner-evaluated axes
+ * whose separation stays below floor (the unnormalised value compared with floor |c|: no root). */
+static int edge_axis(const placed *A, const placed *B, const arcs *T, int i, int j, double floor, prox_vec3 *n,
+                     double *s)
+{
+    const prox_polytope *a = A->p, *b = B->p;
+    int cross = arcs_cross(a, b, T, i, j);
+    if (cross < 0) return 0;
+    prox_vec3 x0 = A->v[a->e[i][0]], y0 = B->v[b->e[j][0]];
+    prox_vec3 ea = prox_v3_sub(A->v[a->e[i][1]], x0), eb = prox_v3_sub(B->v[b->e[j][1]], y0);
+    prox_vec3 c = prox_v3_cross(ea, eb);
+    double l2 = prox_v3_norm2(c), e2 = prox_v3_norm2(ea) * prox_v3_norm2(eb);
+    /* parallel edges: no facet of their own (core/tol.h) */
+    if (!(l2 > PROX_TOL_EDGE_AXIS * PROX_TOL_EDGE_AXIS * e2)) return 0;
+    if (cross > 0 && l2 >= PROX_TOL_GAUSS_AXIS * PROX_TOL_GAUSS_AXIS * e2) {
+        if (prox_v3_dot(c, prox_v3_add(a->n[a->ef[i][0]], a->n[a->ef[i][1]])) < 0.0) c = prox_v3_neg(c);
+        double su = prox_v3_dot(c, prox_v3_sub(y0, x0)); /* = s |c| */
+        if (floor < 0.0 && su < 0.0 && su * su >= floor * floor * l2) return 0;
+        if (floor >= 0.0 && !(su > 0.0 && su * su > floor * floor * l2)) return 0;
+        double l = sqrt(l2);
+        *n = prox_v3_scale(c, 1.0 / l);
+        *s = su / l;
+        return 1;
+    }
+    c = prox_v3_scale(c, 1.0 / sqrt(l2));
+    double alo, ahi, blo, bhi;
+    hrange(A, c, &alo, &ahi);
+    hrange(B, c, &blo, &bhi);
+    double sp = blo - ahi, sm = alo - bhi; /* along c and along -c */
+    *n = sp >= sm ? c : prox_v3_neg(c);
+    *s = sp >= sm ? sp : sm;
+    return 1;
+}
+
+/* The candidate axes of the depth: every face normal (unless its separation provably stays more than
+ * band below the best so far) and the edge pairs whose Gauss-map arcs cross (or may). The largest
+ * separation over them equals the largest over all axes, and every axis within band of it is listed. */
+static double depth_axes(const placed *A, const placed *B, double band, axes *X)
+{
+    const prox_polytope *a = A->p, *b = B->p;
+    X->n = 0;
+    X->best = 0;
+    double best = -INFINITY;
+    for (int f = 0; f < a->nf; ++f) {
+        double s = face_sep(B, a->n[f], A->d[f], best - band);
+        if (s > -INFINITY) add_axis(X, a->n[f], s), best = X->s[X->best];
+    }
+    for (int g = 0; g < b->nf; ++g) { /* axis -n_g: min_B (-n_g).y - max_A (-n_g).x = min_A n_g.x - d_g */
+        double s = face_sep(A, b->n[g], B->d[g], best - band);
+        if (s > -INFINITY) add_axis(X, prox_v3_neg(b->n[g]), s), best = X->s[X->best];
+    }
+    arcs T;
+    arc_tables(a, b, &T);
+    for (int i = 0; i < a->ne; ++i)
+        for (int j = 0; j < b->ne; ++j) {
+            prox_vec3 n;
+            double s;
+            if (!arcs_apart(&T, i, j) && edge_axis(A, B, &T, i, j, X->s[X->best] - band, &n, &s)) add_axis(X, n, s);
+        }
+    return X->s[X->best];
+}
+
+/* The depth's witnesses: among the axes within a touch of the largest separation s, face normals
+ * first, the first whose support features meet in projection. */
+static void depth_witness(const placed *A, const placed *B, const axes *X, double s, double S, prox_signed_result *r)
+{
+    double ftol = PROX_TOL_POLY_FEATURE * S, ctol = PROX_TOL_TOUCH * S, best_res = INFINITY;
+    for (int i = 0; i < X->n; ++i) {
+        if (X->s[i] < s - PROX_TOL_TOUCH * S) continue;
+        prox_vec3 q1, q2;
+        double res = axis_witness(A, B, X->ax[i], X->s[i], ftol, ctol, &q1, &q2);
+        if (res < best_res) {
+            best_res = res;
+            r->sd = X->s[i];
+            r->normal = X->ax[i];
+            r->p1 = q1;
+            r->p2 = q2;
+        }
+        if (res <= ctol) break;
+    }
+}
+
 /* ---- entry points ---- */
 
 static double pair_scale(const prox_polytope *a, const prox_polytope *b, prox_vec3 D)
@@ -625,29 +862,71 @@ static void disjoint_distance(const placed *A, const placed *B, prox_vec3 L, dou
     r->certified = r->distance - r->certificate_gap <= PROX_TOL_CERT * S;
 }
 
-prox_distance_result prox_poly_distance(const prox_polytope *a, prox_vec3 ca, const prox_polytope *b, prox_vec3 cb)
+/* The exhaustive distance of a placed pair (Dp: B's reference point in the placed frame). */
+static void distance_exhaustive(placed *A, placed *B, prox_vec3 Dp, double S, prox_distance_result *r)
+{
+    axes X;
+    place_dirs(A);
+    place_dirs(B);
+    if (fast_path(A, B, Dp, S, r)) {
+        /* decided: a common point, or a certified distance */
+    } else if (all_axes(A, B, 1, &X) > 0.0) {
+        if (!certified(A, B, X.ax[X.best], S, 3, r)) disjoint_distance(A, B, X.ax[X.best], S, r);
+    } else {
+        double tol = PROX_TOL_TOUCH * S;
+        prox_vec3 x;
+        if (common_point(A, B, tol, &x)) {
+            r->intersect = 1;
+            r->p1 = r->p2 = x;
+            r->certified = contains(A, x, tol) && contains(B, x, tol);
+        } else { /* not reached for solids with no separating axis; answer by the features */
+            disjoint_distance(A, B, X.ax[X.best], S, r);
+            r->certified = 0;
+        }
+    }
+}
+
+/* A disjoint pair's signed result from its distance. */
+static void signed_from_distance(const prox_distance_result *d, prox_signed_result *r)
+{
+    r->sd = d->distance;
+    r->normal = prox_v3_scale(prox_v3_sub(d->p2, d->p1), 1.0 / d->distance);
+    r->p1 = d->p1;
+    r->p2 = d->p2;
+    r->sd_lower = d->certified ? d->certificate_gap : 0.0;
+}
+
+/* The exhaustive signed distance of a placed pair. */
+static void signed_exhaustive(placed *A, placed *B, prox_vec3 Dp, double S, prox_signed_result *r)
+{
+    axes X;
+    prox_distance_result d = {0};
+    place_dirs(A);
+    place_dirs(B);
+    int fp = fast_path(A, B, Dp, S, &d);
+    double s = fp == 2 ? 1.0 : all_axes(A, B, 0, &X);
+    if (fp == 2) {
+        signed_from_distance(&d, r);
+    } else if (s > 0.0) {
+        if (!certified(A, B, X.ax[X.best], S, 3, &d)) disjoint_distance(A, B, X.ax[X.best], S, &d);
+        signed_from_distance(&d, r);
+    } else {
+        depth_witness(A, B, &X, s, S, r);
+    }
+}
+
+static prox_distance_result distance_entry(const prox_polytope *a, prox_vec3 ca, const prox_polytope *b, prox_vec3 cb,
+                                           int exhaustive)
 {
     prox_distance_result r = {0};
     prox_vec3 D = prox_v3_sub(cb, ca);
     placed A, B;
     double u, S;
     place_pair(a, b, D, &A, &B, &u, &S);
-    axes X;
-    if (fast_path(&A, &B, prox_v3_scale(D, u), S, &r)) {
-        /* decided: a common point, or a certified distance */
-    } else if (all_axes(&A, &B, 1, &X) > 0.0) {
-        if (!certified(&A, &B, X.ax[X.best], S, 3, &r)) disjoint_distance(&A, &B, X.ax[X.best], S, &r);
-    } else {
-        double tol = PROX_TOL_TOUCH * S;
-        prox_vec3 x;
-        if (common_point(&A, &B, tol, &x)) {
-            r.intersect = 1;
-            r.p1 = r.p2 = x;
-            r.certified = contains(&A, x, tol) && contains(&B, x, tol);
-        } else { /* not reached for solids with no separating axis; answer by the features */
-            disjoint_distance(&A, &B, X.ax[X.best], S, &r);
-            r.certified = 0;
-        }
+    prox_vec3 Dp = prox_v3_scale(D, u);
+    if (exhaustive || !gjk_path(&A, &B, Dp, S, &r)) {
+        r = (prox_distance_result){0};
+        distance_exhaustive(&A, &B, Dp, S, &r);
     }
     r.distance /= u;
     r.certificate_gap /= u;
@@ -656,51 +935,61 @@ prox_distance_result prox_poly_distance(const prox_polytope *a, prox_vec3 ca, co
     return r;
 }
 
-prox_signed_result prox_poly_signed(const prox_polytope *a, prox_vec3 ca, const prox_polytope *b, prox_vec3 cb)
+/* The signed distance: GJK decides disjoint pairs (certified) and finds the overlapping ones, whose
+ * depth comes from the pruned axes (depth_axes); anything undecided takes the exhaustive method. */
+static prox_signed_result signed_entry(const prox_polytope *a, prox_vec3 ca, const prox_polytope *b, prox_vec3 cb,
+                                       int exhaustive)
 {
     prox_signed_result r = {0};
     prox_vec3 D = prox_v3_sub(cb, ca);
     placed A, B;
     double u, S;
     place_pair(a, b, D, &A, &B, &u, &S);
-    axes X;
+    prox_vec3 Dp = prox_v3_scale(D, u);
     prox_distance_result d = {0};
-    int fp = fast_path(&A, &B, prox_v3_scale(D, u), S, &d);
-    double s = fp == 2 ? 1.0 : all_axes(&A, &B, 0, &X);
+    int fp = exhaustive ? 0 : gjk_path(&A, &B, Dp, S, &d);
     if (fp == 2) {
-        r.sd = d.distance;
-        r.normal = prox_v3_scale(prox_v3_sub(d.p2, d.p1), 1.0 / d.distance);
-        r.p1 = d.p1;
-        r.p2 = d.p2;
-        r.sd_lower = d.certified ? d.certificate_gap : 0.0;
-    } else if (s > 0.0) {
-        if (!certified(&A, &B, X.ax[X.best], S, 3, &d)) disjoint_distance(&A, &B, X.ax[X.best], S, &d);
-        r.sd = d.distance;
-        r.normal = prox_v3_scale(prox_v3_sub(d.p2, d.p1), 1.0 / d.distance);
-        r.p1 = d.p1;
-        r.p2 = d.p2;
-        r.sd_lower = d.certified ? d.certificate_gap : 0.0;
-    } else {
-        /* The depth axis: among the axes within a touch of the largest separation, face normals
-         * first, the first whose support features meet in projection. */
-        double ftol = PROX_TOL_POLY_FEATURE * S, ctol = PROX_TOL_TOUCH * S, best_res = INFINITY;
-        for (int i = 0; i < X.n; ++i) {
-            if (X.s[i] < s - PROX_TOL_TOUCH * S) continue;
-            prox_vec3 q1, q2;
-            double res = axis_witness(&A, &B, X.ax[i], X.s[i], ftol, ctol, &q1, &q2);
-            if (res < best_res) {
-                best_res = res;
-                r.sd = X.s[i];
-                r.normal = X.ax[i];
-                r.p1 = q1;
-                r.p2 = q2;
-            }
-            if (res <= ctol) break;
+        signed_from_distance(&d, &r);
+    } else if (fp == 1) {
+        axes X;
+        double s = depth_axes(&A, &B, PROX_TOL_TOUCH * S, &X);
+        /* GJK put the solids within PROX_TOL_TOUCH S of each other: a positive separation up to that
+         * is a touching contact (its axis and witnesses stand for the distance within the band);
+         * more would contradict GJK, and the exhaustive method decides. */
+        if (s <= PROX_TOL_TOUCH * S) {
+            depth_witness(&A, &B, &X, s, S, &r);
+            if (r.sd > 0.0) r.sd_lower = r.sd; /* the separation along the axis: a dual bound */
+        } else {
+            signed_exhaustive(&A, &B, Dp, S, &r);
         }
+    } else {
+        signed_exhaustive(&A, &B, Dp, S, &r);
     }
     r.sd /= u;
     r.sd_lower /= u;
     r.p1 = unplace(r.p1, u, ca);
     r.p2 = unplace(r.p2, u, ca);
     return r;
+}
+
+prox_distance_result prox_poly_distance(const prox_polytope *a, prox_vec3 ca, const prox_polytope *b, prox_vec3 cb)
+{
+    return distance_entry(a, ca, b, cb, 0);
+}
+
+prox_distance_result prox_poly_distance_exhaustive(const prox_polytope *a, prox_vec3 ca, const prox_polytope *b,
+                                                   prox_vec3 cb)
+{
+    return distance_entry(a, ca, b, cb, 1);
+}
+
+prox_signed_result prox_poly_signed(const prox_polytope *a, prox_vec3 ca, const prox_polytope *b, prox_vec3 cb)
+{
+    return signed_entry(a, ca, b, cb, 0);
+}
+
+prox_signed_result prox_poly_signed_exhaustive(const prox_polytope *a, prox_vec3 ca, const prox_polytope *b,
+                                               prox_vec3 cb)
+{
+    return signed_entry(a, ca, b, cb, 1);
 }
