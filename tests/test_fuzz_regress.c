@@ -256,6 +256,25 @@ static void test_fuzz_axis_support_point(void **state)
     assert_true(g.sd_lower <= g.sd && g.sd <= g.sd_upper);
 }
 
+/* fuzz/crashes/pairs-ell-subnormal-axis-*: a sphere's centre a subnormal distance (3.7e-315) off an
+ * ellipsoid's major axis, inside it. The point-ellipse secular equation's derivative carries
+ * 1 / Z and overflowed: Newton stopped at its bracket's end and the nearest boundary point came out
+ * at the corner (a, b), 0.77 outside the ellipsoid. Within PROX_ELLIPSE_AXIS_Z b of the axis the
+ * point is on it. Here (0.5, 0) is at the vertex's centre of curvature: the vertex is nearest, 1.5 away. */
+static void test_fuzz_ell_subnormal_axis(void **state)
+{
+    (void)state;
+    prox_shape a = prox_shape_from_ell((prox_ell){prox_v3(0, 0, 0), prox_v3(2, 0, 0), 1.7320508075688772});
+    prox_shape b = prox_shape_from_sph((prox_sph){prox_v3(0.5, 0, 3.7300707263061427e-315), 1.0});
+    double S = prox_shape_pair_scale(&a, &b), r0 = 1e-12 * S;
+    prox_signed_result g = prox_shape_signed_distance(&a, &b);
+    assert_int_equal(g.status, PROX_OK);
+    assert_near(g.sd, -2.5, 1e-12 * S);
+    prox_shape ba = prox_shape_from_sph((prox_sph){g.p1, r0}), bb = prox_shape_from_sph((prox_sph){g.p2, r0});
+    assert_true(prox_shape_distance(&a, &ba).distance <= r0);
+    assert_true(prox_shape_distance(&b, &bb).distance <= r0);
+}
+
 /* fuzz/crashes/pairs-needle-wed-*, pairs-flat-rhp-rcc-*: a wedge whose triangle sides were 1e-19 of its
  * height and hexagonal plates 1e-23 to 1e-110 as thick as wide gave order-dependent, wrong distances.
  * Such bodies lie outside the supported aspect ratio (PROX_MAX_ASPECT, shapes.h) and are named
@@ -306,6 +325,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_degenerate_aspect),
         cmocka_unit_test(test_fuzz_signed_witness_tiny_disk),
         cmocka_unit_test(test_fuzz_axis_support_point),
+        cmocka_unit_test(test_fuzz_ell_subnormal_axis),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -67,7 +67,7 @@ static double quadrant(double e0, double e1, double y0, double y1, double *x0, d
 {
     double r = e1 / e0, dd = (1.0 - r) * (1.0 + r), z0 = y0 / e0;
     double zz = (y1 / e0) * r; /* Z; 0 when y1 is so close to the major axis that it underflows */
-    if (zz > 0.0) {
+    if (zz > 0.0 && y1 > PROX_ELLIPSE_AXIS_Z * e1) { /* else on the major axis (tol.h) */
         if (y0 > 0.0) {
             double z1 = y1 / e1, g = z0 * z0 + z1 * z1 - 1.0;
             if (g == 0.0) {

@@ -224,6 +224,12 @@
 #define PROX_ELLIPSE_STEP (4.0 * DBL_EPSILON)
 #define PROX_ELLIPSE_MAXIT 2200
 
+/* A point within PROX_ELLIPSE_AXIS_Z x the minor semi-axis of the major axis is on it: the secular
+ * equation's derivative carries 1 / Z (Z ~ that offset x e1 / e0^2) and overflows for a subnormal
+ * offset (the nearest point then came out at the corner (e0, e1)), while the on-axis closed form is
+ * exact to within the offset, far below any rounding of the answer. */
+#define PROX_ELLIPSE_AXIS_Z 1e-150
+
 /* ---- cell check (src/cells/classify.c, check.c) ---- */
 
 /* Rounding allowance of the box-surface classification, relative to the sum of the magnitudes of
