@@ -20,6 +20,16 @@ static prox_cyl cyl_centred(const prox_rcc *c)
     return k;
 }
 
+prox_body prox_body_of_polytope(const prox_polytope *p, prox_vec3 c)
+{
+    prox_body b = {0};
+    b.kind = PROX_BODY_POLY;
+    b.c = c;
+    b.x.poly = *p;
+    b.size = p->size;
+    return b;
+}
+
 prox_body prox_body_make(const prox_shape *s)
 {
     prox_body b = {0};

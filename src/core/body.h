@@ -53,6 +53,10 @@ static inline int prox_body_symmetric(const prox_body *b) { return b->kind <= PR
 /* The body of a valid shape (validate first: this is the hot path of the generic queries). */
 prox_body prox_body_make(const prox_shape *s);
 
+/* The body of a polytope already built (prox_polytope_make or prox_polytope_checked), reference
+ * point c. */
+prox_body prox_body_of_polytope(const prox_polytope *p, prox_vec3 c);
+
 /* Centred support function hc(d) = h(d) - d.c (d need not be unit; hc(0) = 0). */
 static inline double prox_body_hc(const prox_body *b, prox_vec3 d)
 {

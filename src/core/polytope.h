@@ -32,6 +32,10 @@ typedef struct prox_polytope {
 /* The polytope of a valid BOX, RPP, RHP, WED or ARB; returns its reference point c (absolute). */
 prox_vec3 prox_polytope_make(const prox_shape *s, prox_polytope *p);
 
+/* The shape's validation (its kind's validator: RHP, WED, ARB, BOX, RPP) and, when it passes, its
+ * polytope (*p, reference point *c) built once for both. */
+prox_status prox_polytope_checked(const prox_shape *s, prox_polytope *p, prox_vec3 *c);
+
 /* Centred support function hc(d) = max_i d.v_i and a support point (a corner; a zero component
  * along a face or an edge picks one of its corners). */
 double prox_polytope_hc(const prox_polytope *p, prox_vec3 d);

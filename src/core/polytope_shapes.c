@@ -62,24 +62,22 @@ static int hexagon_ok(const prox_rhp *h)
 /* Within the supported aspect ratio (shapes.h): the width across every face (the spread of the
  * corners along its normal) at least 1/PROX_MAX_ASPECT of the diameter; a flat plate or a needle
  * has a face across which it is thinner. */
-static prox_status aspect_ok(const prox_shape *sh)
+static prox_status aspect_ok(const prox_polytope *p)
 {
-    prox_polytope p;
-    prox_polytope_make(sh, &p);
-    for (int f = 0; f < p.nf; ++f) {
+    for (int f = 0; f < p->nf; ++f) {
         double lo = INFINITY, hi = -INFINITY;
-        for (int i = 0; i < p.nv; ++i) {
-            double t = prox_v3_dot(p.n[f], p.v[i]);
+        for (int i = 0; i < p->nv; ++i) {
+            double t = prox_v3_dot(p->n[f], p->v[i]);
             lo = fmin(lo, t), hi = fmax(hi, t);
         }
-        if (!((hi - lo) * PROX_MAX_ASPECT >= p.size)) return PROX_EINVAL_RANGE;
+        if (!((hi - lo) * PROX_MAX_ASPECT >= p->size)) return PROX_EINVAL_RANGE;
     }
     return PROX_OK;
 }
 
-PROX_API prox_status prox_rhp_validate(const prox_rhp *h)
+/* The checks of each card that need no polytope; prox_polytope_checked builds it once after them. */
+static prox_status rhp_card_ok(const prox_rhp *h)
 {
-    if (!h) return PROX_EINVAL_ARG;
     prox_status s;
     if ((s = vec_ok(h->base)) || (s = vec_ok(h->axis))) return s;
     for (int i = 0; i < 3; ++i)
@@ -89,9 +87,16 @@ PROX_API prox_status prox_rhp_validate(const prox_rhp *h)
         if ((s = size_vec(h->r[i], PROX_EINVAL_RHP))) return s;
         if (abs_cos(h->r[i], h->axis) > PROX_BOX_ORTHO_TOL) return PROX_EINVAL_RHP;
     }
-    if (!hexagon_ok(h)) return PROX_EINVAL_RHP;
+    return hexagon_ok(h) ? PROX_OK : PROX_EINVAL_RHP;
+}
+
+PROX_API prox_status prox_rhp_validate(const prox_rhp *h)
+{
+    if (!h) return PROX_EINVAL_ARG;
     prox_shape sh = prox_shape_from_rhp(*h);
-    return aspect_ok(&sh);
+    prox_polytope p;
+    prox_vec3 c;
+    return prox_polytope_checked(&sh, &p, &c);
 }
 
 PROX_API prox_status prox_rhp_regular(prox_vec3 base, prox_vec3 axis, prox_vec3 r, prox_rhp *out)
@@ -111,9 +116,8 @@ PROX_API prox_status prox_rhp_regular(prox_vec3 base, prox_vec3 axis, prox_vec3 
     return s;
 }
 
-PROX_API prox_status prox_wed_validate(const prox_wed *w)
+static prox_status wed_card_ok(const prox_wed *w)
 {
-    if (!w) return PROX_EINVAL_ARG;
     prox_status s;
     if ((s = vec_ok(w->vertex)) || (s = vec_ok(w->v1)) || (s = vec_ok(w->v2)) || (s = vec_ok(w->v3))) return s;
     if ((s = size_vec(w->v1, PROX_EINVAL_WED)) || (s = size_vec(w->v2, PROX_EINVAL_WED)) ||
@@ -122,9 +126,16 @@ PROX_API prox_status prox_wed_validate(const prox_wed *w)
     if (abs_cos(w->v3, w->v1) > PROX_BOX_ORTHO_TOL || abs_cos(w->v3, w->v2) > PROX_BOX_ORTHO_TOL)
         return PROX_EINVAL_WED;
     prox_vec3 c = prox_v3_cross(prox_v3_normalize(w->v1), prox_v3_normalize(w->v2));
-    if (!(prox_v3_norm(c) > PROX_TOL_POLY_DEGEN)) return PROX_EINVAL_WED;
+    return prox_v3_norm(c) > PROX_TOL_POLY_DEGEN ? PROX_OK : PROX_EINVAL_WED;
+}
+
+PROX_API prox_status prox_wed_validate(const prox_wed *w)
+{
+    if (!w) return PROX_EINVAL_ARG;
     prox_shape sh = prox_shape_from_wed(*w);
-    return aspect_ok(&sh);
+    prox_polytope p;
+    prox_vec3 c;
+    return prox_polytope_checked(&sh, &p, &c);
 }
 
 /* ---- ARB ---- */
@@ -214,19 +225,42 @@ static prox_status arb_solid_ok(const prox_polytope *p)
     return PROX_OK;
 }
 
-PROX_API prox_status prox_arb_validate(const prox_arb *a)
+static prox_status arb_card_ok(const prox_arb *a)
 {
-    if (!a) return PROX_EINVAL_ARG;
     prox_status s;
     for (int i = 0; i < 8; ++i)
         if (!prox_v3_isfinite(a->corner[i])) return PROX_EINVAL_NONFINITE;
     for (int i = 0; i < 8; ++i)
         if ((s = vec_ok(a->corner[i]))) return s;
-    if ((s = arb_faces_ok(a))) return s;
+    return arb_faces_ok(a);
+}
+
+PROX_API prox_status prox_arb_validate(const prox_arb *a)
+{
+    if (!a) return PROX_EINVAL_ARG;
     prox_shape sh = prox_shape_from_arb(*a);
     prox_polytope p;
-    prox_polytope_make(&sh, &p);
-    if ((s = arb_solid_ok(&p))) return s;
-    if (!size_ok(p.size)) return PROX_EINVAL_RANGE;
-    return aspect_ok(&sh);
+    prox_vec3 c;
+    return prox_polytope_checked(&sh, &p, &c);
+}
+
+prox_status prox_polytope_checked(const prox_shape *s, prox_polytope *p, prox_vec3 *c)
+{
+    prox_status st;
+    switch (s->kind) {
+    case PROX_SHAPE_RHP: st = rhp_card_ok(&s->u.rhp); break;
+    case PROX_SHAPE_WED: st = wed_card_ok(&s->u.wed); break;
+    case PROX_SHAPE_ARB: st = arb_card_ok(&s->u.arb); break;
+    case PROX_SHAPE_BOX: st = prox_box_validate(&s->u.box); break;
+    case PROX_SHAPE_RPP: st = prox_rpp_validate(&s->u.rpp); break;
+    default: return PROX_EINVAL_SHAPE_KIND;
+    }
+    if (st != PROX_OK) return st;
+    *c = prox_polytope_make(s, p);
+    if (s->kind == PROX_SHAPE_BOX || s->kind == PROX_SHAPE_RPP) return PROX_OK;
+    if (s->kind == PROX_SHAPE_ARB) {
+        if ((st = arb_solid_ok(p))) return st;
+        if (!size_ok(p->size)) return PROX_EINVAL_RANGE;
+    }
+    return aspect_ok(p);
 }

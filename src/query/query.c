@@ -194,19 +194,21 @@ static prox_test_result test_canon(const norm_shape *x, const norm_shape *y)
 
 /* ---- the polytope pairs and the support-function method ---- */
 
-/* The polytopes of two valid polytope shapes (reference points in *ca, *cb). */
-static void polys(const prox_shape *a, const prox_shape *b, prox_polytope *pa, prox_vec3 *ca, prox_polytope *pb,
-                  prox_vec3 *cb)
+/* The polytopes of two polytope shapes (reference points in *ca, *cb), each validated as it is built
+ * (one construction serves both): A's status first, as every query reports. */
+static prox_status polys(const prox_shape *a, const prox_shape *b, prox_polytope *pa, prox_vec3 *ca, prox_polytope *pb,
+                         prox_vec3 *cb)
 {
-    *ca = prox_polytope_make(a, pa);
-    *cb = prox_polytope_make(b, pb);
+    prox_status st = prox_polytope_checked(a, pa, ca);
+    return st != PROX_OK ? st : prox_polytope_checked(b, pb, cb);
 }
 
 static prox_distance_result poly_distance(const prox_shape *a, const prox_shape *b)
 {
     prox_polytope pa, pb;
     prox_vec3 ca, cb;
-    polys(a, b, &pa, &ca, &pb, &cb);
+    prox_distance_result r = {0};
+    if ((r.status = polys(a, b, &pa, &ca, &pb, &cb)) != PROX_OK) return r;
     return prox_poly_distance(&pa, ca, &pb, cb);
 }
 
@@ -214,10 +216,12 @@ static prox_signed_result poly_signed(const prox_shape *a, const prox_shape *b)
 {
     prox_polytope pa, pb;
     prox_vec3 ca, cb;
-    polys(a, b, &pa, &ca, &pb, &cb);
-    prox_signed_result r = prox_poly_signed(&pa, ca, &pb, cb);
+    prox_signed_result r = {0};
+    if ((r.status = polys(a, b, &pa, &ca, &pb, &cb)) != PROX_OK) return r;
+    r = prox_poly_signed(&pa, ca, &pb, cb);
     r.certified = 1; /* every separating axis of the two polytopes examined */
-    prox_shape_signed_bounds(a, b, &r);
+    prox_body ba = prox_body_of_polytope(&pa, ca), bb = prox_body_of_polytope(&pb, cb);
+    prox_body_signed_bounds(&ba, &bb, &r);
     return r;
 }
 
@@ -293,8 +297,9 @@ PROX_API prox_distance_result prox_shape_distance(const prox_shape *a, const pro
     }
     default: break;
     }
+    if (route_of(a->kind, b->kind) == ROUTE_POLY) return poly_distance(a, b); /* validates as it builds */
     if ((r.status = validate2(a, b)) != PROX_OK) return r;
-    return route_of(a->kind, b->kind) == ROUTE_POLY ? poly_distance(a, b) : convex_distance(a, b);
+    return convex_distance(a, b);
 }
 
 /* A sphere s against any shape b: the exact point-to-body distance (closed form, its enclosure set by
@@ -321,8 +326,9 @@ PROX_API prox_signed_result prox_shape_signed_distance(const prox_shape *a, cons
     }
     default: break;
     }
+    if (route_of(a->kind, b->kind) == ROUTE_POLY) return poly_signed(a, b); /* validates as it builds */
     if ((r.status = validate2(a, b)) != PROX_OK) return r;
-    return route_of(a->kind, b->kind) == ROUTE_POLY ? poly_signed(a, b) : convex_signed(a, b);
+    return convex_signed(a, b);
 }
 
 PROX_API prox_test_result prox_shape_test(const prox_shape *a, const prox_shape *b)
