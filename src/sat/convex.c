@@ -25,7 +25,9 @@
  * cap of radius rho around D_c, phi >= |g| cos(angle(g, D_c) + rho) with g the support point of P at
  * D_c (h_P is convex and g.D <= h_P(D)), and phi >= the sum of each body's exact minimum over the
  * cap (hc of a sphere, ellipsoid, cylinder and cone is a function of D.w alone); Newton and the local
- * kinks run once more from the best direction the cover left (it can be a non-stationary cell centre). */
+ * kinks run once more from the best direction the cover left (it can be a non-stationary cell centre).
+ * The distance query first tries cheap certificates (GJK's simplex pair; Newton and the support sets
+ * at its best direction), each accepted only when -phi along the pair's own direction meets it. */
 #include "convex.h"
 
 #include "core/plane2.h"
@@ -34,6 +36,7 @@
 #include <float.h>
 #include <stdatomic.h>
 #include <stddef.h>
+#include <string.h>
 
 #define CVX_MAXK 64        /* kinks of a pair: a polytope has <= 8 faces and 18 edges */
 #define CVX_TOPK 6         /* distinct starts of the local depth search */
@@ -44,10 +47,14 @@
 #define CVX_BB_DEPTH 40    /* cover of the sphere: icosahedron faces split up to 40 times (1e-12 rad) */
 #define CVX_BB_BUDGET 40000
 #define CVX_GOLD 1.6180339887498948482 /* the icosahedron (0, +-1, +-golden) and its cyclic shifts */
+#define CVX_NEAR_GJK 1e-4  /* radius (rad) of the early kink search around GJK's best direction */
+#define CVX_GJK_LOOSE 1e-6 /* a kink-free pair's first GJK stops at this relative gap (then Newton) */
 
 static atomic_ulong cvx_global_runs;
 
 unsigned long prox_convex_global_count(void) { return atomic_load(&cvx_global_runs); }
+
+static atomic_ulong cvx_gjk_cert; /* distance queries certified by an early exit */
 
 /* ---- the pair --------------------------------------------------------------------------------- */
 
@@ -62,6 +69,7 @@ typedef struct cvx {
     prox_body a, b;   /* relative to A's reference point, unit scale */
     prox_vec3 delta;  /* b.c - a.c */
     double S;         /* scale of the scaled pair */
+    double gjk_rel;   /* GJK also stops at |v| + phi <= gjk_rel |v| (0: only at rounding) */
     double best_phi;
     prox_vec3 best_d;
     int nk;
@@ -460,24 +468,30 @@ static prox_vec3 face_foot(const gjk_pt *p, int m)
 static int gjk_closest(gjk_pt p[4], int *n, prox_vec3 *v, double lam[4])
 {
     double best = INFINITY, bl[4] = {1, 0, 0, 0};
-    int best_mask = 1, inside = 0;
+    int best_mask = 1, inside = 0, last = 1 << (*n - 1);
+    /* the faces holding the newest point first: the closest point of the new hull lies on one of them
+     * when it is closer than the old simplex's (GJK's progress), so the others are looked at only when
+     * rounding leaves none of those valid */
+    for (int pass = 0; pass < 2 && best == INFINITY && !inside; ++pass)
     for (int mask = 1; mask < (1 << *n); ++mask) {
+        if ((!(mask & last)) != pass) continue;
         prox_vec3 q[4], e[3];
         int m = 0;
         for (int i = 0; i < *n; ++i)
             if (mask >> i & 1) q[m++] = p[i].w;
-        double G[3][4] = {{0}}, mu[3] = {0, 0, 0};
+        double G[3][3], rhs[3], mu[3] = {0, 0, 0}; /* only the m - 1 rows and columns in use are set */
         for (int i = 1; i < m; ++i) e[i - 1] = prox_v3_sub(q[i], q[0]);
         for (int i = 0; i < m - 1; ++i) {
             for (int j = 0; j < m - 1; ++j) G[i][j] = prox_v3_dot(e[i], e[j]);
-            G[i][3] = -prox_v3_dot(e[i], q[0]);
+            rhs[i] = -prox_v3_dot(e[i], q[0]);
         }
         int ok = 1;
         for (int c = 0; c < m - 1 && ok; ++c) {
             if (!(G[c][c] > 1e-24 * (G[0][0] + 1e-300))) ok = 0;
             for (int r = c + 1; r < m - 1 && ok; ++r) {
                 double f = G[r][c] / G[c][c];
-                for (int k = c; k < 4; ++k) G[r][k] -= f * G[c][k];
+                for (int k = c; k < m - 1; ++k) G[r][k] -= f * G[c][k];
+                rhs[r] -= f * rhs[c];
             }
         }
         /* four points nearly in a plane (support points on a flat face of P): their hull is covered
@@ -488,7 +502,7 @@ static int gjk_closest(gjk_pt p[4], int *n, prox_vec3 *v, double lam[4])
         }
         if (!ok) continue;
         for (int c = m - 2; c >= 0; --c) {
-            double t = G[c][3];
+            double t = rhs[c];
             for (int k = c + 1; k < m - 1; ++k) t -= G[c][k] * mu[k];
             mu[c] = t / G[c][c];
         }
@@ -543,11 +557,11 @@ static gjk_out gjk_run(cvx *s)
         double vv = prox_v3_norm2(v);
         if (!(vv > floor2)) { verdict = 2; break; }
         prox_vec3 d = prox_v3_scale(v, -1.0 / sqrt(vv));
-        double f = phi_eval(s, d);
+        gjk_pt q = gjk_support(s, d);
+        double f = prox_v3_dot(d, q.w); /* phi(d) = h_P(d): q.w is P's support point at d */
         record(s, d, f);
         separated |= f < 0.0;
-        if (separated && sqrt(vv) + f <= tol) { verdict = 1; break; }
-        gjk_pt q = gjk_support(s, d);
+        if (separated && sqrt(vv) + f <= fmax(tol, s->gjk_rel * sqrt(vv))) { verdict = 1; break; }
         int dup = 0;
         for (int i = 0; i < n; ++i) dup |= prox_v3_norm2(prox_v3_sub(q.w, p[i].w)) <= floor2;
         if (dup) break;
@@ -934,24 +948,34 @@ static void sets_pair(const cvx_set *fa, const cvx_set *fb, prox_vec3 n, prox_ve
 static const double cvx_ftol[2] = {PROX_TOL_FACE, PROX_TOL_NOISE};
 
 /* The extreme points of A along n and of B along -n: the witnesses when no reading of the support
- * sets gives a finite pair. */
+ * sets gives a finite pair (a support set too small for its projections, e.g. a disk of radius 1e-91,
+ * is a point already, set_ellipse). */
 static void support_points(const cvx *s, prox_vec3 n, prox_vec3 *p1, prox_vec3 *p2)
 {
     *p1 = prox_v3_add(s->a.c, prox_body_pc(&s->a, n));
     *p2 = prox_v3_add(s->b.c, prox_body_pc(&s->b, prox_v3_neg(n)));
 }
 
+/* 1 when two readings of a support set are the same set (the same points in the same order). */
+static int set_same(const cvx_set *f, const cvx_set *g)
+{
+    if (f->nv != g->nv || f->ell != g->ell) return 0;
+    if (f->ell) return !memcmp(&f->c, &g->c, sizeof f->c) && !memcmp(&f->e1, &g->e1, sizeof f->e1) && !memcmp(&f->e2, &g->e2, sizeof f->e2);
+    return !memcmp(f->v, g->v, (size_t)f->nv * sizeof f->v[0]);
+}
+
 /* Disjoint: the closest pair of the support sets along n over the readings, polished by alternating
  * exact projections onto the solids (which never increase |p2 - p1| and keep p1 in A, p2 in B). */
 static double witness_disjoint(const cvx *s, prox_vec3 n, prox_vec3 *p1, prox_vec3 *p2)
 {
-    support_points(s, n, p1, p2);
-    double best = prox_v3_dist(*p1, *p2);
-    for (int i = 0; i < 2; ++i)
-        for (int j = 0; j < 2; ++j) {
-            cvx_set fa = support_set(&s->a, n, cvx_ftol[i]), fb = support_set(&s->b, prox_v3_neg(n), cvx_ftol[j]);
+    double best = INFINITY;
+    cvx_set fa[2], fb[2];
+    for (int i = 0; i < 2; ++i) fa[i] = support_set(&s->a, n, cvx_ftol[i]), fb[i] = support_set(&s->b, prox_v3_neg(n), cvx_ftol[i]);
+    int na = set_same(&fa[0], &fa[1]) ? 1 : 2, nb = set_same(&fb[0], &fb[1]) ? 1 : 2; /* a reading twice */
+    for (int i = 0; i < na; ++i)
+        for (int j = 0; j < nb; ++j) {
             prox_vec3 x, y;
-            sets_pair(&fa, &fb, n, &x, &y);
+            sets_pair(&fa[i], &fb[j], n, &x, &y);
             double d = prox_v3_dist(x, y);
             /* a touching corner against a rim off the optimal normal converges at ~0.75 a step */
             for (int it = 0; it < 96; ++it) {
@@ -962,6 +986,7 @@ static double witness_disjoint(const cvx *s, prox_vec3 n, prox_vec3 *p1, prox_ve
             }
             if (d < best) best = d, *p1 = x, *p2 = y;
         }
+    if (!(best < INFINITY)) support_points(s, n, p1, p2), best = prox_v3_dist(*p1, *p2);
     return best;
 }
 
@@ -970,8 +995,7 @@ static double witness_disjoint(const cvx *s, prox_vec3 n, prox_vec3 *p1, prox_ve
  * distance. */
 static double witness_overlap(const cvx *s, prox_vec3 n, double sd, prox_vec3 *p1, prox_vec3 *p2)
 {
-    support_points(s, n, p1, p2);
-    double best = prox_v3_norm(prox_v3_mad(prox_v3_sub(*p2, *p1), -sd, n));
+    double best = INFINITY;
     for (int i = 0; i < 2; ++i)
         for (int j = 0; j < 2; ++j) {
             cvx_set fa = support_set(&s->a, n, cvx_ftol[i]), fb = support_set(&s->b, prox_v3_neg(n), cvx_ftol[j]);
@@ -980,6 +1004,7 @@ static double witness_overlap(const cvx *s, prox_vec3 n, double sd, prox_vec3 *p
             double e = prox_v3_norm(prox_v3_mad(prox_v3_sub(y, x), -sd, n));
             if (e < best) best = e, *p1 = x, *p2 = y;
         }
+    if (!(best < INFINITY)) support_points(s, n, p1, p2), best = prox_v3_norm(prox_v3_mad(prox_v3_sub(*p2, *p1), -sd, n));
     return best;
 }
 
@@ -1036,7 +1061,7 @@ static cvx_answer finish_disjoint(cvx *s, const gjk_out *g)
         r.upper = g->vnorm, r.p1 = x, r.p2 = y, r.n = s->best_d;
     }
     r.upper = prox_v3_dist(r.p1, r.p2);
-    r.lower = -s->best_phi;
+    r.lower = -phi_eval(s, s->best_d); /* from the support functions, whichever way it was found */
     return r;
 }
 
@@ -1336,6 +1361,7 @@ static void pair_make(const prox_body *a, const prox_body *b, cvx *s, prox_vec3 
     s->b = prox_body_scaled(&rb, *f);
     s->delta = prox_v3_sub(s->b.c, s->a.c);
     s->S = S * *f;
+    s->gjk_rel = 0.0;
     s->best_phi = INFINITY;
     s->best_d = prox_v3(0, 0, 1);
     s->nk = s->ntop = 0;
@@ -1460,7 +1486,59 @@ static void common_point(cvx *s, const gjk_out *g, prox_distance_result *r, prox
     info->certified = r->certified;
 }
 
-prox_distance_result prox_convex_distance_ex(const prox_body *a, const prox_body *b, prox_convex_info *info)
+/* The early certificate of a disjoint pair x in A, y in B: the weak-duality bound -phi along the
+ * pair's own direction n = (y - x) / |y - x| within PROX_TOL_CERT S of |y - x|. Along n itself, so
+ * that x and y lie on the supporting planes at n to that slack and n is the normal: a pair that only
+ * matched -phi at some other direction (GJK's) can be ~sqrt(slack x size) off the closest points. */
+static int pair_certified(const cvx *s, prox_vec3 x, prox_vec3 y, cvx_answer *r)
+{
+    prox_vec3 v = prox_v3_sub(y, x);
+    double up = prox_v3_norm(v);
+    if (!(up > PROX_TOL_TOUCH * s->S)) return 0; /* touching: the direction is rounding */
+    prox_vec3 n = prox_v3_scale(v, 1.0 / up);
+    double lower = -phi_eval(s, n);
+    if (!(up - lower <= PROX_TOL_CERT * s->S)) return 0;
+    r->lower = lower, r->upper = up, r->n = n, r->p1 = x, r->p2 = y;
+    return 1;
+}
+
+/* GJK's own certificate: most pairs end GJK with its simplex pair (convex combinations of support
+ * points) and -phi within a few ulps of S, often close enough to the normal that the pair certifies
+ * along its own direction; then the search and the support-set witnesses have nothing to add. */
+static int gjk_certified(const cvx *s, const gjk_out *g, cvx_answer *r)
+{
+    return g->verdict == 1 && s->best_phi < 0.0 && pair_certified(s, g->xa, g->xb, r);
+}
+
+/* The next cheapest: Newton on the sphere from GJK's best direction (it reaches the normal of a
+ * smooth contact quadratically), the kink points near it (a polytope's face normals), the support
+ * points there; then the kink circles within CVX_NEAR_GJK of it (an edge or a rim: GJK to rounding
+ * leaves its direction far closer) and the closest pair of the support sets at the best direction
+ * alone (witness_disjoint). */
+static int newton_certified(cvx *s, const gjk_out *g, cvx_answer *r)
+{
+    if (g->verdict != 1 || !(s->best_phi < 0.0)) return 0;
+    cell_newton(s, s->best_d);
+    for (int i = 0; i < s->nk; ++i)
+        if (!s->k[i].circle && kink_dist(&s->k[i], s->best_d) <= CVX_LOCAL) consider(s, s->k[i].w);
+    prox_vec3 x, y;
+    support_points(s, s->best_d, &x, &y); /* a smooth contact: the support points themselves */
+    if (pair_certified(s, x, y, r)) return 1;
+    kinks_local(s, s->best_d, CVX_NEAR_GJK); /* an edge: the kink circles through the optimum */
+    witness_disjoint(s, s->best_d, &x, &y);
+    return pair_certified(s, x, y, r);
+}
+
+/* The distance query. mode CVX_FAST, for a pair with no kinks (ELL, SPH: phi smooth everywhere, so
+ * Newton converges quadratically from anywhere near the optimum): GJK stopped at a relative gap of
+ * CVX_GJK_LOOSE (GJK converges only linearly on curved bodies), then Newton and the support points
+ * at its best direction; not certified there, the query runs again in mode CVX_TIGHT, which every
+ * pair with kinks starts with: GJK to rounding, its own certificate, Newton and the support sets at
+ * its best direction, then the full search. CVX_FULL: GJK to rounding and the full search (the
+ * reference of the tests). */
+enum { CVX_FAST, CVX_TIGHT, CVX_FULL };
+
+static prox_distance_result distance_run(const prox_body *a, const prox_body *b, prox_convex_info *info, int mode)
 {
     prox_convex_info tmp;
     if (!info) info = &tmp;
@@ -1472,10 +1550,22 @@ prox_distance_result prox_convex_distance_ex(const prox_body *a, const prox_body
     prox_vec3 o;
     double f;
     pair_make(a, b, &s, &o, &f);
+    if (mode == CVX_FAST && s.nk > 0) mode = CVX_TIGHT; /* a kink: Newton alone may not reach it */
+    if (mode == CVX_FAST) s.gjk_rel = CVX_GJK_LOOSE;
     gjk_out g = gjk_run(&s);
+    cvx_answer ans = {0};
+    int early = 0;
+    if (mode == CVX_FAST && g.verdict == 1) {
+        early = gjk_certified(&s, &g, &ans) || newton_certified(&s, &g, &ans);
+        if (!early) return distance_run(a, b, info, CVX_TIGHT);
+    }
     if (g.verdict == 2 && !(s.best_phi < 0.0) && g.vnorm > PROX_TOL_TOUCH * s.S) depth_starts(&s);
+    if (mode == CVX_TIGHT) early = gjk_certified(&s, &g, &ans) || newton_certified(&s, &g, &ans);
+    if (early) {
+        atomic_fetch_add(&cvx_gjk_cert, 1);
+        info->certified = 1;
+    } else if (g.verdict != 0 && s.best_phi < 0.0) ans = solve_disjoint(&s, &g, info);
     if (g.verdict != 0 && s.best_phi < 0.0) {
-        cvx_answer ans = solve_disjoint(&s, &g, info);
         r.distance = ans.upper;
         r.p1 = ans.p1, r.p2 = ans.p2;
         r.certificate_gap = ans.lower;
@@ -1491,4 +1581,20 @@ prox_distance_result prox_convex_distance_ex(const prox_body *a, const prox_body
     return r;
 }
 
+prox_distance_result prox_convex_distance_ex(const prox_body *a, const prox_body *b, prox_convex_info *info)
+{
+    return distance_run(a, b, info, CVX_FAST);
+}
+
 prox_distance_result prox_convex_distance(const prox_body *a, const prox_body *b) { return prox_convex_distance_ex(a, b, NULL); }
+
+/* Internal, for the tests that check the early exits against the full engine (no header: declared
+ * here and in those tests). */
+prox_distance_result prox_convex_distance_full(const prox_body *a, const prox_body *b, prox_convex_info *info);
+prox_distance_result prox_convex_distance_full(const prox_body *a, const prox_body *b, prox_convex_info *info)
+{
+    return distance_run(a, b, info, CVX_FULL);
+}
+
+unsigned long prox_convex_gjk_certified_count(void);
+unsigned long prox_convex_gjk_certified_count(void) { return atomic_load(&cvx_gjk_cert); }

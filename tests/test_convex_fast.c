@@ -1,0 +1,227 @@
+/* The early exits of the support-function distance query (src/sat/convex.c: GJK's own certificate,
+ * then Newton and the support sets at the best direction alone) against the full engine (the local
+ * search and every candidate normal, prox_convex_distance_full), on random pairs of every curved kind
+ * (TRC, REC, ELL) against every kind, in both orders: near pairs, touching pairs (moved into contact
+ * along the full engine's normal), near-touching pairs (1e-13 S apart), and pairs 1e6 sizes from the
+ * origin. Both answers must agree on the verdict, be certified, give the same distance within 1e-12 S,
+ * and the early answer's witnesses must lie in the solids with |p2 - p1| = distance and its proven
+ * lower bound within PROX_TOL_CERT S of it. The early exits must be taken for most disjoint pairs. */
+#include "test_util.h"
+
+#include <float.h>
+
+#include "core/body.h"
+#include "core/tol.h"
+#include "prox/query.h"
+#include "sat/convex.h"
+
+/* Internal entry points of src/sat/convex.c (no header). */
+prox_distance_result prox_convex_distance_full(const prox_body *a, const prox_body *b, prox_convex_info *info);
+unsigned long prox_convex_gjk_certified_count(void);
+
+#define BAR 1e-12 /* the accuracy bar of distances and points, in units of S */
+
+static double lsize(test_rng *g) { return exp(test_range(g, log(0.2), log(10.0))); }
+
+/* A random solid of any kind centred near c, random orientation (RPP axis-aligned). */
+static prox_shape any_shape(test_rng *g, int kind, prox_vec3 c)
+{
+    double s[4];
+    for (int k = 0; k < 4; ++k) s[k] = lsize(g);
+    test_rot R = test_random_rot(g);
+    prox_vec3 e0 = test_rot_apply(&R, prox_v3(1, 0, 0)), e1 = test_rot_apply(&R, prox_v3(0, 1, 0)), e2 = test_rot_apply(&R, prox_v3(0, 0, 1));
+    prox_vec3 base = prox_v3_mad(c, -0.5 * s[0], e2);
+    switch (kind) {
+    case PROX_SHAPE_RCC: return prox_shape_from_rcc((prox_rcc){base, prox_v3_scale(e2, s[0]), 0.5 * s[1]});
+    case PROX_SHAPE_BOX: {
+        prox_box b = {c, {prox_v3_scale(e0, s[0]), prox_v3_scale(e1, s[1]), prox_v3_scale(e2, s[2])}};
+        for (int k = 0; k < 3; ++k) b.corner = prox_v3_mad(b.corner, -0.5, b.edge[k]);
+        return prox_shape_from_box(b);
+    }
+    case PROX_SHAPE_RPP:
+        return prox_shape_from_rpp((prox_rpp){c.x - 0.5 * s[0], c.x + 0.5 * s[0], c.y - 0.5 * s[1], c.y + 0.5 * s[1], c.z - 0.5 * s[2],
+                                              c.z + 0.5 * s[2]});
+    case PROX_SHAPE_SPH: return prox_shape_from_sph((prox_sph){c, 0.5 * s[0]});
+    case PROX_SHAPE_TRC: {
+        prox_trc t = {base, prox_v3_scale(e2, s[0]), 0.5 * s[1], test_uniform(g) < 0.2 ? 0.0 : 0.5 * s[2]};
+        if (t.r1 == t.r2) t.r2 *= 0.5;
+        return prox_shape_from_trc(t);
+    }
+    case PROX_SHAPE_REC:
+        return prox_shape_from_rec((prox_rec){base, prox_v3_scale(e2, s[0]), prox_v3_scale(e0, 0.5 * fmax(s[1], s[2])),
+                                              prox_v3_scale(e1, 0.5 * fmin(s[1], s[2]))});
+    case PROX_SHAPE_ELL: return prox_shape_from_ell((prox_ell){c, prox_v3_scale(e2, 0.5 * s[0]), 0.5 * s[1]});
+    case PROX_SHAPE_RHP: {
+        prox_rhp h;
+        assert_int_equal(prox_rhp_regular(base, prox_v3_scale(e2, s[0]), prox_v3_scale(e0, 0.5 * s[1]), &h), PROX_OK);
+        return prox_shape_from_rhp(h);
+    }
+    case PROX_SHAPE_WED: {
+        double a = test_range(g, 0.3, 2.8);
+        prox_wed w = {prox_v3_mad(base, -0.3 * s[1], e0), prox_v3_scale(e0, s[1]),
+                      prox_v3_scale(prox_v3_add(prox_v3_scale(e0, cos(a)), prox_v3_scale(e1, sin(a))), s[2]), prox_v3_scale(e2, s[0])};
+        return prox_shape_from_wed(w);
+    }
+    default: { /* ARB: a frustum, the top rectangle the bottom one scaled by f */
+        prox_arb x = {{{0}}, {1234, 5678, 1265, 2376, 3487, 4158}};
+        double f = test_range(g, 0.2, 1.5);
+        static const double sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
+        for (int i = 0; i < 4; ++i) {
+            prox_vec3 q = prox_v3_add(prox_v3_scale(e0, 0.5 * s[1] * sx[i]), prox_v3_scale(e1, 0.5 * s[2] * sy[i]));
+            x.corner[i] = prox_v3_add(base, q);
+            x.corner[i + 4] = prox_v3_add(prox_v3_mad(base, s[0], e2), prox_v3_scale(q, f));
+        }
+        return prox_shape_from_arb(x);
+    }
+    }
+}
+
+typedef struct stats {
+    int pairs, disjoint, early;
+    double err_d, err_w;
+} stats;
+
+/* Compares the distance query with its early exits against the full engine on one pair. */
+static void check_pair(const prox_shape *sa, const prox_shape *sb, stats *st)
+{
+    assert_int_equal(prox_shape_validate(sa), PROX_OK);
+    assert_int_equal(prox_shape_validate(sb), PROX_OK);
+    prox_body a = prox_body_make(sa), b = prox_body_make(sb);
+    double S = prox_shape_pair_scale(sa, sb);
+    prox_convex_info fi, gi;
+    unsigned long e0 = prox_convex_gjk_certified_count();
+    prox_distance_result f = prox_convex_distance_ex(&a, &b, &fi);
+    int early = prox_convex_gjk_certified_count() != e0;
+    prox_distance_result g = prox_convex_distance_full(&a, &b, &gi);
+    assert_int_equal(f.status, PROX_OK);
+    assert_int_equal(g.status, PROX_OK);
+    st->pairs++;
+    /* the verdict is GJK's, the same for both */
+    assert_int_equal(f.intersect, g.intersect);
+    if (f.intersect) {
+        assert_false(early);
+        assert_int_equal(f.certified, g.certified);
+        return;
+    }
+    st->disjoint++, st->early += early;
+    /* the bar, and the rounding of the input coordinates of a pair far from the origin (an ARB's
+     * corners there are coplanar only to 1e-9 S: its vertices and its face planes, which the full
+     * engine's projections use, disagree by that much) */
+    double tol = BAR * S + 16.0 * DBL_EPSILON * prox_v3_norm(f.p1);
+    /* an early exit is a certificate; otherwise the query certifies whenever the full engine does (a
+     * far ARB's fuzzy corners can leave both short of PROX_TOL_CERT S) */
+    if (!((early ? f.certified : f.certified >= g.certified) && fabs(f.distance - g.distance) <= tol)) {
+        print_error("kinds %d %d: S %g lower %.17g full lower %.17g\n", sa->kind, sb->kind, S, f.certificate_gap, g.certificate_gap);
+        print_error("kinds %d %d: early %d certified %d/%d distance %.17g full %.17g (diff/S %.3g)\n", sa->kind, sb->kind, early,
+                    f.certified, g.certified, f.distance, g.distance, fabs(f.distance - g.distance) / S);
+        fail();
+    }
+    /* the early answer's proof: its lower bound within PROX_TOL_CERT S, and below the full answer */
+    if (f.certified) assert_true(f.distance - f.certificate_gap <= PROX_TOL_CERT * S * 1.0001);
+    assert_true(f.certificate_gap <= g.distance + PROX_TOL_CERT * S + tol);
+    assert_true(g.certificate_gap <= f.distance + PROX_TOL_CERT * S);
+    /* its witnesses: in the solids (within the bar and the rounding of their absolute coordinates: a
+     * pair 1e6 sizes from the origin), |p2 - p1| = distance */
+    assert_true(prox_body_contains(&a, f.p1, tol));
+    assert_true(prox_body_contains(&b, f.p2, tol));
+    /* an early answer's witnesses: their own direction is the normal, the gap of the support functions
+     * along it (weak duality, from the bodies' support functions) meets the distance. Not 1e6 sizes
+     * from the origin: there the absolute witnesses' rounding (1e-9) turns their direction by up to
+     * 1e-7 rad, which costs a face's kink first order (the engine checks it in relative coordinates) */
+    if (early && prox_v3_norm(f.p1) < 1e3 * S) {
+        prox_vec3 v = prox_v3_sub(f.p2, f.p1), n = prox_v3_scale(v, 1.0 / prox_v3_norm(v));
+        double gap = -prox_body_support(&b, prox_v3_neg(n)) - prox_body_support(&a, n);
+        if (!(gap >= f.distance - tol)) {
+            print_error("kinds %d %d: gap along the witnesses %.17g distance %.17g (diff/S %.3g)\n", sa->kind, sb->kind, gap, f.distance,
+                        (f.distance - gap) / S);
+            fail();
+        }
+    }
+    double ew = fabs(prox_v3_dist(f.p1, f.p2) - f.distance);
+    assert_true(ew <= 2.0 * tol);
+    ew /= S;
+    st->err_d = fmax(st->err_d, fabs(f.distance - g.distance) / S);
+    st->err_w = fmax(st->err_w, ew);
+}
+
+/* Families: 0 near (B 0.05 .. 2 sizes of A away: disjoint and overlapping), 1 touching, 2
+ * near-touching (1e-13 S), 3 near pairs 1e6 sizes from the origin, 4 close (1e-10 .. 1e-3 S apart,
+ * log-uniform: just outside the touching band, where a pair off the normal shows most). */
+static void make_pair(test_rng *g, int fam, int ka, int kb, prox_shape *a, prox_shape *b)
+{
+    prox_vec3 o = fam == 3 ? prox_v3_scale(test_unit(g), 1e6 * test_range(g, 1.0, 10.0)) : prox_v3(0, 0, 0);
+    *a = any_shape(g, ka, o);
+    double sz = prox_shape_size(a);
+    *b = any_shape(g, kb, prox_v3_mad(o, sz * exp(test_range(g, log(0.05), log(2.0))), test_unit(g)));
+    if (fam == 0 || fam == 3) return;
+    prox_body ba = prox_body_make(a), bb = prox_body_make(b);
+    prox_signed_result r = prox_convex_signed(&ba, &bb);
+    if (!(r.sd > 0.0)) return; /* overlapping: kept as it is (the verdict is still compared) */
+    double S = prox_shape_pair_scale(a, b), gap = fam == 2 ? 1e-13 * S : (fam == 4 ? S * exp(test_range(g, log(1e-10), log(1e-3))) : 0.0);
+    *b = test_translate(b, prox_v3_scale(r.normal, gap - r.sd));
+}
+
+static void run_family(int fam, int per_kind, uint64_t seed)
+{
+    static const char *const names[] = {"near", "touching", "near-touching", "far-from-origin", "close"};
+    test_rng g = test_rng_seed(seed);
+    stats st = {0, 0, 0, 0.0, 0.0};
+    for (int kc = PROX_SHAPE_TRC; kc <= PROX_SHAPE_ELL; ++kc)
+        for (int k = 0; k < PROX_SHAPE_KIND_COUNT_; ++k)
+            for (int i = 0; i < per_kind; ++i) {
+                prox_shape a, b;
+                int swap = i & 1;
+                make_pair(&g, fam, swap ? k : kc, swap ? kc : k, &a, &b);
+                check_pair(&a, &b, &st);
+            }
+    printf("%-16s pairs %5d disjoint %5d early exits %5d  max |distance - full|/S %.2g  max ||p2-p1| - distance|/S %.2g\n",
+           names[fam], st.pairs, st.disjoint, st.early, st.err_d, st.err_w);
+    /* the point of the early exits: most disjoint pairs take them (not touching and near-touching
+     * pairs, within the touching band, where the direction of p2 - p1 is rounding: they decline) */
+    assert_true(st.disjoint > 0);
+    if (fam == 0 || fam == 3) assert_true(st.early * 2 > st.disjoint);
+    if (fam == 4) assert_true(st.early * 4 > st.disjoint); /* the smallest gaps decline more often */
+}
+
+static void test_fast_near(void **state)
+{
+    (void)state;
+    run_family(0, 60, 301);
+}
+
+static void test_fast_touching(void **state)
+{
+    (void)state;
+    run_family(1, 16, 302);
+}
+
+static void test_fast_near_touching(void **state)
+{
+    (void)state;
+    run_family(2, 16, 303);
+}
+
+static void test_fast_far_from_origin(void **state)
+{
+    (void)state;
+    run_family(3, 20, 304);
+}
+
+static void test_fast_close(void **state)
+{
+    (void)state;
+    run_family(4, 20, 305);
+}
+
+int main(void)
+{
+    test_init();
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_fast_near),
+        cmocka_unit_test(test_fast_touching),
+        cmocka_unit_test(test_fast_near_touching),
+        cmocka_unit_test(test_fast_far_from_origin),
+        cmocka_unit_test(test_fast_close),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
