@@ -35,12 +35,16 @@ static prox_vec3 newell(const prox_polytope *p, int f)
 }
 
 /* Face whose loop holds the directed edge a -> b, or -1. */
-static int face_with_edge(const prox_polytope *p, int a, int b)
+/* The face of each directed edge a -> b (the first in face order when an invalid loop repeats one),
+ * -1 where none: one pass over the loops instead of a search per edge. */
+static void edge_faces(const prox_polytope *p, signed char of[PROX_POLY_MAXV][PROX_POLY_MAXV])
 {
+    memset(of, -1, sizeof(signed char) * PROX_POLY_MAXV * PROX_POLY_MAXV);
     for (int f = 0; f < p->nf; ++f)
-        for (int i = 0; i < p->fnv[f]; ++i)
-            if (p->fv[f][i] == a && p->fv[f][(i + 1) % p->fnv[f]] == b) return f;
-    return -1;
+        for (int i = 0; i < p->fnv[f]; ++i) {
+            int a = p->fv[f][i], b = p->fv[f][(i + 1) % p->fnv[f]];
+            if (of[a][b] < 0) of[a][b] = (signed char)f;
+        }
 }
 
 /* Normals, plane offsets (mean over the face's corners), edges and size from the corners and the
@@ -54,11 +58,13 @@ static void finish(prox_polytope *p, int have_normals)
         for (int i = 0; i < p->fnv[f]; ++i) s += prox_v3_dot(p->n[f], p->v[p->fv[f][i]]);
         p->d[f] = s / p->fnv[f];
     }
+    signed char of[PROX_POLY_MAXV][PROX_POLY_MAXV];
+    edge_faces(p, of);
     p->ne = 0;
     for (int f = 0; f < p->nf; ++f)
         for (int i = 0; i < p->fnv[f]; ++i) {
             int a = p->fv[f][i], b = p->fv[f][(i + 1) % p->fnv[f]];
-            int g = face_with_edge(p, b, a);
+            int g = of[b][a];
             if (g < 0 || p->ne < 0) {
                 p->ne = -1;
                 continue;
@@ -74,9 +80,15 @@ static void finish(prox_polytope *p, int have_normals)
             p->ef[p->ne][1] = (unsigned char)g;
             p->ne++;
         }
-    p->size = 0.0;
+    /* the diameter: the largest squared distance, one square root (the corners lie within the
+     * supported range, where no square overflows or underflows) */
+    double s2 = 0.0;
     for (int i = 0; i < p->nv; ++i)
-        for (int j = i + 1; j < p->nv; ++j) p->size = fmax(p->size, prox_v3_dist(p->v[i], p->v[j]));
+        for (int j = i + 1; j < p->nv; ++j) {
+            double d2 = prox_v3_norm2(prox_v3_sub(p->v[i], p->v[j]));
+            if (d2 > s2) s2 = d2;
+        }
+    p->size = sqrt(s2);
 }
 
 /* Moves the corners (given relative to the anchor o) to their centroid; returns the centroid (absolute). */
