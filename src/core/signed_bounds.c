@@ -60,7 +60,7 @@ static int quick_centre(const prox_shape *s, prox_vec3 *c, double *size)
 {
     switch (s->kind) {
     case PROX_SHAPE_RCC:
-        *c = prox_v3_mad(s->u.rcc.base, 0.5, s->u.rcc.axis);
+        *c = prox_rcc_center(&s->u.rcc);
         *size = fmax(prox_v3_norm(s->u.rcc.axis), 2.0 * s->u.rcc.radius);
         return 1;
     case PROX_SHAPE_BOX: {

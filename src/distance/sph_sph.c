@@ -23,8 +23,7 @@ PROX_API prox_signed_result prox_sph_sph_signed_distance(const prox_sph *a, cons
     r.p2 = prox_v3_mad(b->center, -b->radius, r.normal);
     /* Proved: the gap of the projections on the line of centres is sd itself (weak duality below),
      * and the witnesses on the spheres are |sd| apart (above); rounding aside. */
-    double err = PROX_TOL_BOUND * fmax(d, 2.0 * fmax(a->radius, b->radius));
-    r.sd_lower = r.sd - err, r.sd_upper = fmin(r.sd + err, r.sd > 0.0 ? INFINITY : 0.0), r.certified = 1;
+    prox_signed_closed_form(&r, fmax(d, 2.0 * fmax(a->radius, b->radius)));
     return r;
 }
 

@@ -248,11 +248,7 @@ static prox_signed_result convex_signed(const prox_shape *a, const prox_shape *b
         prox_body_signed_bounds(&ba, &bb, &c);
         return c;
     }
-    prox_convex_info info;
-    prox_signed_result s = prox_convex_signed_ex(&ba, &bb, &info);
-    if (s.status == PROX_OK && s.sd <= 0.0 && info.intersect && info.certified) /* the cover's proof */
-        s.certified = 1, s.sd_upper = -info.lower;
-    if (s.status == PROX_OK && s.sd > 0.0) s.sd_lower = info.lower; /* the duality bound */
+    prox_signed_result s = prox_convex_signed(&ba, &bb);
     if (s.status == PROX_OK && s.sd > 0.0) {
         prox_vec3 v = prox_v3_sub(s.p2, s.p1);
         double len = prox_v3_norm(v), S = fmax(prox_v3_dist(ba.c, bb.c), fmax(ba.size, bb.size));

@@ -1430,6 +1430,10 @@ prox_signed_result prox_convex_signed_ex(const prox_body *a, const prox_body *b,
     r.p2 = to_abs(o, f, r.p2);
     info->lower /= f;
     info->upper /= f;
+    /* what it proved, for the enclosure (prox_body_signed_bounds): the cover's lower bound of the
+     * depth, or the duality bound of the distance */
+    if (r.sd <= 0.0 && info->intersect && info->certified) r.certified = 1, r.sd_upper = -info->lower;
+    if (r.sd > 0.0) r.sd_lower = info->lower;
     return r;
 }
 

@@ -36,7 +36,9 @@ prox_distance_result prox_convex_distance(const prox_body *a, const prox_body *b
 
 /* Signed distance: sd > 0 the distance, sd <= 0 minus the penetration depth; normal the unit
  * direction from A towards B (moving B by -sd normal separates it when sd < 0); p1 on A's boundary,
- * p2 on B's, p2 - p1 = sd normal (within 1e-12 S disjoint, 1e-9 S overlapping). */
+ * p2 on B's, p2 - p1 = sd normal (within 1e-12 S disjoint, 1e-9 S overlapping). What it proved is
+ * passed on for the enclosure (prox_body_signed_bounds): sd_lower = the duality bound when disjoint;
+ * certified with sd_upper = -(the cover's lower bound of the depth) when the cover completed. */
 prox_signed_result prox_convex_signed(const prox_body *a, const prox_body *b);
 
 /* The same, with what it certified (info may be NULL). */

@@ -19,10 +19,7 @@ PROX_API prox_signed_result prox_shape_signed_distance_support(const prox_shape 
     /* the ridge search of sup_engine.c assumes centrally symmetric bodies (CYL, BOX, SPH); the added
      * kinds take the general certified method (convex.c), which scales and translates on its own */
     if (!prox_body_symmetric(&ba) || !prox_body_symmetric(&bb)) {
-        prox_convex_info info;
-        r = prox_convex_signed_ex(&ba, &bb, &info);
-        if (r.sd <= 0.0 && info.intersect && info.certified) r.certified = 1, r.sd_upper = -info.lower;
-        if (r.sd > 0.0) r.sd_lower = info.lower;
+        r = prox_convex_signed(&ba, &bb);
         prox_body_signed_bounds(&ba, &bb, &r);
         return r;
     }
