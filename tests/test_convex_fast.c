@@ -5,7 +5,9 @@
  * along the full engine's normal), near-touching pairs (1e-13 S apart), and pairs 1e6 sizes from the
  * origin. Both answers must agree on the verdict, be certified, give the same distance within 1e-12 S,
  * and the early answer's witnesses must lie in the solids with |p2 - p1| = distance and its proven
- * lower bound within PROX_TOL_CERT S of it. The early exits must be taken for most disjoint pairs. */
+ * lower bound within PROX_TOL_CERT S of it. The early exits must be taken for most disjoint pairs.
+ * The signed query likewise (prox_convex_signed_full: no early exit, the depth proved by the cover),
+ * with shallow overlaps whose depth the tangent balls at the witnesses prove. */
 #include "test_util.h"
 
 #include <float.h>
@@ -14,10 +16,6 @@
 #include "core/tol.h"
 #include "prox/query.h"
 #include "sat/convex.h"
-
-/* Internal entry points of src/sat/convex.c (no header). */
-prox_distance_result prox_convex_distance_full(const prox_body *a, const prox_body *b, prox_convex_info *info);
-unsigned long prox_convex_gjk_certified_count(void);
 
 #define BAR 1e-12 /* the accuracy bar of distances and points, in units of S */
 
@@ -183,6 +181,92 @@ static void run_family(int fam, int per_kind, uint64_t seed)
     if (fam == 4) assert_true(st.early * 4 > st.disjoint); /* the smallest gaps decline more often */
 }
 
+typedef struct sstats {
+    int pairs, overlapping, balls, disjoint, early;
+    double err_sd;
+} sstats;
+
+/* The signed query with its early exits (the distance's certificates for a disjoint pair, the tangent
+ * balls for a shallow depth) against the full search and its cover on one pair: the same answer
+ * (1e-12 S disjoint, 1e-9 S overlapping), each one's proven bound on the other's side, witnesses with
+ * p2 - p1 = sd n. */
+static void check_signed_pair(const prox_shape *sa, const prox_shape *sb, sstats *st)
+{
+    prox_body a = prox_body_make(sa), b = prox_body_make(sb);
+    double S = prox_shape_pair_scale(sa, sb), o = 16.0 * DBL_EPSILON * prox_v3_norm(a.c);
+    prox_convex_info fi, gi;
+    unsigned long e0 = prox_convex_gjk_certified_count();
+    prox_signed_result f = prox_convex_signed_ex(&a, &b, &fi);
+    int early = prox_convex_gjk_certified_count() != e0;
+    prox_signed_result g = prox_convex_signed_full(&a, &b, &gi);
+    assert_int_equal(fi.intersect, gi.intersect);
+    double bar = (fi.intersect ? 1e-9 : BAR) * S + o;
+    st->pairs++;
+    if (!(fabs(f.sd - g.sd) <= bar)) {
+        print_error("kinds %d %d: sd %.17g full %.17g (diff/S %.3g) intersect %d global %d\n", sa->kind, sb->kind, f.sd, g.sd,
+                    fabs(f.sd - g.sd) / S, fi.intersect, fi.global);
+        fail();
+    }
+    st->err_sd = fmax(st->err_sd, fabs(f.sd - g.sd) / S);
+    assert_true(prox_v3_norm(prox_v3_mad(prox_v3_sub(f.p2, f.p1), -f.sd, f.normal)) <= bar);
+    if (fi.intersect) {
+        st->overlapping++;
+        st->balls += !fi.global;
+        /* both proofs: each lower bound of the depth at most the other's depth */
+        /* a sphere's depth is answered in closed form by the queries: against a cone tip the cover
+         * can run out of cells (both searches then say so) */
+        assert_true(fi.certified >= gi.certified);
+        assert_true(fi.lower <= -g.sd + o + PROX_TOL_PHI_ROUND * S);
+        assert_true(gi.lower <= -f.sd + o + PROX_TOL_PHI_ROUND * S);
+        if (fi.certified) assert_true(-f.sd - fi.lower <= PROX_TOL_DEPTH_CERT * S * 1.0001 + PROX_TOL_TOUCH * S);
+        return;
+    }
+    st->disjoint++, st->early += early;
+    assert_true(fi.lower <= g.sd + bar);
+    assert_true(prox_body_contains(&a, f.p1, bar) && prox_body_contains(&b, f.p2, bar));
+}
+
+/* Overlapping pairs by depth: B moved along the full engine's normal to a depth of 1e-4 .. 0.1 S
+ * (shallow: the tangent balls prove most of them) or left where the near family puts it. */
+static void run_signed(int shallow, int per_kind, uint64_t seed)
+{
+    test_rng g = test_rng_seed(seed);
+    sstats st = {0, 0, 0, 0, 0, 0.0};
+    for (int kc = PROX_SHAPE_TRC; kc <= PROX_SHAPE_ELL; ++kc)
+        for (int k = 0; k < PROX_SHAPE_KIND_COUNT_; ++k)
+            for (int i = 0; i < per_kind; ++i) {
+                prox_shape a, b;
+                int swap = i & 1;
+                make_pair(&g, 0, swap ? k : kc, swap ? kc : k, &a, &b);
+                if (shallow) {
+                    prox_body ba = prox_body_make(&a), bb = prox_body_make(&b);
+                    prox_signed_result r = prox_convex_signed_full(&ba, &bb, NULL);
+                    double S = prox_shape_pair_scale(&a, &b), depth = S * exp(test_range(&g, log(1e-4), log(0.1)));
+                    b = test_translate(&b, prox_v3_scale(r.normal, -depth - r.sd));
+                }
+                check_signed_pair(&a, &b, &st);
+            }
+    printf("signed %-8s pairs %4d overlapping %4d (by the balls %4d) disjoint %4d (early %4d)  max |sd - full|/S %.2g\n",
+           shallow ? "shallow" : "near", st.pairs, st.overlapping, st.balls, st.disjoint, st.early, st.err_sd);
+    assert_true(st.overlapping > 0);
+    /* what the early exits are for: most shallow depths proved by the balls, most disjoint pairs
+     * by the distance's certificates */
+    if (shallow) assert_true(st.balls * 2 > st.overlapping);
+    else assert_true(st.early * 2 > st.disjoint);
+}
+
+static void test_signed_near(void **state)
+{
+    (void)state;
+    run_signed(0, 8, 306);
+}
+
+static void test_signed_shallow(void **state)
+{
+    (void)state;
+    run_signed(1, 8, 307);
+}
+
 static void test_fast_near(void **state)
 {
     (void)state;
@@ -222,6 +306,8 @@ int main(void)
         cmocka_unit_test(test_fast_near_touching),
         cmocka_unit_test(test_fast_far_from_origin),
         cmocka_unit_test(test_fast_close),
+        cmocka_unit_test(test_signed_near),
+        cmocka_unit_test(test_signed_shallow),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -42,6 +42,8 @@
 #define CVX_TOPK 6         /* distinct starts of the local depth search */
 #define CVX_GJK_IT 96      /* GJK iterations (polytopes finish in far fewer) */
 #define CVX_CIRCLE_SAMPLES 64
+#define CVX_GRAD_HALVINGS 8
+#define CVX_COARSE 1e-6    /* bracket (rad) of a whole circle's valleys: the best is refined locally */
 #define CVX_LOCAL 0.05     /* radius (rad) of the local kink search around the best direction */
 #define CVX_NEAR 1e-5      /* a direction this close (rad) to a kink names it for the witnesses */
 #define CVX_BB_DEPTH 40    /* cover of the sphere: icosahedron faces split up to 40 times (1e-12 rad) */
@@ -285,14 +287,14 @@ static double circ_slope(const cvx *s, const cvx_circ *C, double th, prox_vec3 d
 /* Minimum of phi along the circle in [lo, hi]: the root of the slope by secant steps, every third a
  * bisection (a kink of another body on the circle makes the slope jump: bisection reaches it).
  * Every point is recorded; returns the root (the lower endpoint when the slope does not change sign). */
-static prox_vec3 circ_min(cvx *s, const cvx_circ *C, double lo, double hi)
+static prox_vec3 circ_min_tol(cvx *s, const cvx_circ *C, double lo, double hi, double tol)
 {
     prox_vec3 dl = circ_at(C, lo), dh = circ_at(C, hi), bd = dl;
     double gl = circ_slope(s, C, lo, dl), gh = circ_slope(s, C, hi, dh), fl = consider(s, dl), fh = consider(s, dh), bf = fl;
     if (fh < bf) bf = fh, bd = dh;
     if (!(gl < 0.0 && gh > 0.0)) return bd;
     int it = 0;
-    for (; it < 100 && hi - lo > PROX_TOL_ANGLE; ++it) {
+    for (; it < 100 && hi - lo > tol; ++it) {
         double th = lo - gl * (hi - lo) / (gh - gl);
         if (!(th > lo && th < hi) || it % 3 == 2) th = 0.5 * (lo + hi);
         prox_vec3 d = circ_at(C, th);
@@ -306,6 +308,8 @@ static prox_vec3 circ_min(cvx *s, const cvx_circ *C, double lo, double hi)
      * the stationary point, not the lowest value, gives the support points */
     return it < 100 ? circ_at(C, 0.5 * (lo + hi)) : bd;
 }
+
+static prox_vec3 circ_min(cvx *s, const cvx_circ *C, double lo, double hi) { return circ_min_tol(s, C, lo, hi, PROX_TOL_ANGLE); }
 
 /* Angle of the projection of d on the circle's plane. */
 static double circ_angle(const cvx_circ *C, prox_vec3 d) { return atan2(prox_v3_dot(d, C->v), prox_v3_dot(d, C->u)); }
@@ -324,14 +328,15 @@ static void circ_global(cvx *s, const cvx_kink *k)
     }
     for (int i = 0; i < CVX_CIRCLE_SAMPLES; ++i) {
         int ip = (i + CVX_CIRCLE_SAMPLES - 1) % CVX_CIRCLE_SAMPLES, in = (i + 1) % CVX_CIRCLE_SAMPLES;
-        if (f[i] <= f[ip] && f[i] <= f[in]) circ_min(s, &C, (i - 1) * step, (i + 1) * step);
-        if (g[i] < 0.0 && g[in] > 0.0) circ_min(s, &C, i * step, (i + 1) * step);
+        int up = g[i] < 0.0 && g[in] > 0.0, down = g[ip] < 0.0 && g[i] > 0.0; /* a valley next to i */
+        if (up) circ_min_tol(s, &C, i * step, (i + 1) * step, CVX_COARSE);
+        else if (!down && f[i] <= f[ip] && f[i] <= f[in]) circ_min_tol(s, &C, (i - 1) * step, (i + 1) * step, CVX_COARSE);
     }
 }
 
 /* Kinks within r of d: points evaluated, circles searched within r of d's projection, crossings of
  * two near circles evaluated. */
-static void kinks_local(cvx *s, prox_vec3 d, double r)
+static void kinks_local_tol(cvx *s, prox_vec3 d, double r, double tol)
 {
     for (int i = 0; i < s->nk; ++i) {
         const cvx_kink *k = &s->k[i];
@@ -339,7 +344,7 @@ static void kinks_local(cvx *s, prox_vec3 d, double r)
         if (!k->circle) { consider(s, k->w); continue; }
         cvx_circ C = circ_make(k);
         double th = circ_angle(&C, d), dr = r / fmax(C.s, 1e-3);
-        circ_min(s, &C, th - dr, th + dr);
+        circ_min_tol(s, &C, th - dr, th + dr, tol);
         for (int j = i + 1; j < s->nk; ++j) {
             prox_vec3 x[2];
             if (!s->k[j].circle || kink_dist(&s->k[j], d) > r) continue;
@@ -348,6 +353,8 @@ static void kinks_local(cvx *s, prox_vec3 d, double r)
         }
     }
 }
+
+static void kinks_local(cvx *s, prox_vec3 d, double r) { kinks_local_tol(s, d, r, PROX_TOL_ANGLE); }
 
 /* Every kink: points, the crossings of every two circles, every circle searched whole. */
 static void kinks_global(cvx *s)
@@ -385,7 +392,10 @@ static double newton_step(cvx *s, prox_vec3 *dp, double *fp)
     double len = prox_hypot2(x1, x2);
     if (!(len > 0.0)) return 0.0;
     if (len > 0.5) x1 *= 0.5 / len, x2 *= 0.5 / len, len = 0.5;
-    for (int ls = 0; ls < 30; ++ls) {
+    /* a gradient step that needs more than CVX_GRAD_HALVINGS halvings has met a kink: the kink
+     * searches take over there */
+    int halvings = a > 0.0 && det > 0.0 ? 30 : CVX_GRAD_HALVINGS;
+    for (int ls = 0; ls < halvings; ++ls) {
         prox_vec3 dn = unit(prox_v3_add(d, prox_v3_add(prox_v3_scale(t1, x1), prox_v3_scale(t2, x2))));
         double fn = phi_eval(s, dn);
         if (fn < f) {
@@ -1106,25 +1116,30 @@ static const unsigned char cvx_ico_f[20][3] = {
 
 static prox_vec3 ico_vertex(int i) { return unit(prox_v3(cvx_ico_v[i][0], cvx_ico_v[i][1], cvx_ico_v[i][2])); }
 
+/* max and min of two numbers that are not NaN, inline (fmax and fmin are library calls that order
+ * NaNs, and the cover's bounds call them hundreds of times a cell). */
+static inline double cmax(double x, double y) { return x > y ? x : y; }
+static inline double cmin(double x, double y) { return x < y ? x : y; }
+
 /* Over the cap of radius rho around unit c, the range [amin, amax] of the angle to the unit axis w. */
 static void cap_angles(prox_vec3 w, prox_vec3 c, double rho, double *amin, double *amax)
 {
     double al = angle(c, w);
-    *amin = fmax(0.0, al - rho);
-    *amax = fmin(PROX_PI, al + rho);
+    *amin = cmax(0.0, al - rho);
+    *amax = cmin(PROX_PI, al + rho);
 }
 
 /* min over the angle range of hh |cos a| + r sin a (concave in cos a on each side of a = pi/2). */
 static double lateral_min(double hh, double r, double amin, double amax)
 {
-    double f = fmin(hh * fabs(cos(amin)) + r * sin(amin), hh * fabs(cos(amax)) + r * sin(amax));
-    return amin < 0.5 * PROX_PI && amax > 0.5 * PROX_PI ? fmin(f, r) : f;
+    double f = cmin(hh * fabs(cos(amin)) + r * sin(amin), hh * fabs(cos(amax)) + r * sin(amax));
+    return amin < 0.5 * PROX_PI && amax > 0.5 * PROX_PI ? cmin(f, r) : f;
 }
 
 static double cone_at(const prox_cone *k, double a)
 {
     double t = cos(a), p = sin(a);
-    return fmax(-k->hh * t + k->r1 * p, k->hh * t + k->r2 * p);
+    return cmax(-k->hh * t + k->r1 * p, k->hh * t + k->r2 * p);
 }
 
 /* The exact minimum (a lower bound for ECYL and the polytopes) of hc over the cap around unit c. */
@@ -1137,27 +1152,27 @@ static double body_cap(const prox_body *b, prox_vec3 c, double rho)
         const prox_ellb *k = &b->x.ell;
         cap_angles(k->w, c, rho, &amin, &amax);
         double e = k->a * k->a - k->b * k->b, t2;
-        if (e >= 0.0) t2 = amin <= 0.5 * PROX_PI && amax >= 0.5 * PROX_PI ? 0.0 : fmin(cos(amin) * cos(amin), cos(amax) * cos(amax));
-        else t2 = fmax(cos(amin) * cos(amin), cos(amax) * cos(amax));
-        return sqrt(fmax(0.0, k->b * k->b + e * t2));
+        if (e >= 0.0) t2 = amin <= 0.5 * PROX_PI && amax >= 0.5 * PROX_PI ? 0.0 : cmin(cos(amin) * cos(amin), cos(amax) * cos(amax));
+        else t2 = cmax(cos(amin) * cos(amin), cos(amax) * cos(amax));
+        return sqrt(cmax(0.0, k->b * k->b + e * t2));
     }
     case PROX_BODY_CYL:
         cap_angles(b->cyl.w, c, rho, &amin, &amax);
         return lateral_min(b->cyl.hh, b->cyl.r, amin, amax);
     case PROX_BODY_ECYL:
         cap_angles(b->x.ecyl.w, c, rho, &amin, &amax);
-        return lateral_min(b->x.ecyl.hh, fmin(b->x.ecyl.a1, b->x.ecyl.a2), amin, amax);
+        return lateral_min(b->x.ecyl.hh, cmin(b->x.ecyl.a1, b->x.ecyl.a2), amin, amax);
     case PROX_BODY_CONE: {
         const prox_cone *k = &b->x.cone;
         cap_angles(k->w, c, rho, &amin, &amax);
-        double f = fmin(cone_at(k, amin), cone_at(k, amax)), as = atan2(2.0 * k->hh, k->r1 - k->r2);
-        return as > amin && as < amax ? fmin(f, cone_at(k, as)) : f;
+        double f = cmin(cone_at(k, amin), cone_at(k, amax)), as = atan2(2.0 * k->hh, k->r1 - k->r2);
+        return as > amin && as < amax ? cmin(f, cone_at(k, as)) : f;
     }
     case PROX_BODY_BOX: {
         double f = 0.0;
         for (int i = 0; i < 3; ++i) {
             cap_angles(b->box.a[i], c, rho, &amin, &amax);
-            double m = amin <= 0.5 * PROX_PI && amax >= 0.5 * PROX_PI ? 0.0 : fmin(fabs(cos(amin)), fabs(cos(amax)));
+            double m = amin <= 0.5 * PROX_PI && amax >= 0.5 * PROX_PI ? 0.0 : cmin(fabs(cos(amin)), fabs(cos(amax)));
             f += b->box.h[i] * m;
         }
         return f;
@@ -1166,7 +1181,7 @@ static double body_cap(const prox_body *b, prox_vec3 c, double rho)
         double f = -INFINITY;
         for (int i = 0; i < b->x.poly.nv; ++i) {
             prox_vec3 v = b->x.poly.v[i];
-            f = fmax(f, prox_v3_norm(v) * cos(fmin(PROX_PI, angle(v, c) + rho)));
+            f = cmax(f, prox_v3_norm(v) * cos(cmin(PROX_PI, angle(v, c) + rho)));
         }
         return f;
     }
@@ -1178,7 +1193,7 @@ static double body_cap(const prox_body *b, prox_vec3 c, double rho)
 static double pl_max(const double *a, const v2 *b, int nj, v2 x)
 {
     double m = -INFINITY;
-    for (int j = 0; j < nj; ++j) m = fmax(m, a[j] + prox_v2_dot(b[j], x));
+    for (int j = 0; j < nj; ++j) m = cmax(m, a[j] + prox_v2_dot(b[j], x));
     return m;
 }
 
@@ -1192,7 +1207,7 @@ static double pl_disk_min(const double *a, const v2 *b, int nj, double r)
         double bn = prox_v2_norm(b[j]);
         v2 x = {0, 0};
         if (bn > 0.0) x.x = -b[j].x * r / bn, x.y = -b[j].y * r / bn;
-        m = fmin(m, pl_max(a, b, nj, x));
+        m = cmin(m, pl_max(a, b, nj, x));
         for (int k = j + 1; k < nj; ++k) {
             v2 e = prox_v2_sub(b[j], b[k]);
             double ee = prox_v2_dot(e, e), al = a[j] - a[k];
@@ -1202,14 +1217,14 @@ static double pl_disk_min(const double *a, const v2 *b, int nj, double r)
             if (h2 >= 0.0) {
                 double h = sqrt(h2 / ee);
                 v2 xp = {x0.x - h * e.y, x0.y + h * e.x}, xm = {x0.x + h * e.y, x0.y - h * e.x};
-                m = fmin(m, fmin(pl_max(a, b, nj, xp), pl_max(a, b, nj, xm)));
+                m = cmin(m, cmin(pl_max(a, b, nj, xp), pl_max(a, b, nj, xm)));
             }
             for (int l = k + 1; l < nj; ++l) {
                 v2 f = prox_v2_sub(b[j], b[l]);
                 double det = prox_v2_cross(e, f), rl = a[l] - a[j], rk = a[k] - a[j];
                 if (!(fabs(det) > 0.0)) continue;
                 v2 x3 = {(rk * f.y - rl * e.y) / det, (e.x * rl - f.x * rk) / det};
-                if (prox_v2_dot(x3, x3) <= r * r) m = fmin(m, pl_max(a, b, nj, x3));
+                if (prox_v2_dot(x3, x3) <= r * r) m = cmin(m, pl_max(a, b, nj, x3));
             }
         }
     }
@@ -1232,12 +1247,12 @@ static double cap_bound(const cvx *s, prox_vec3 c, const prox_vec3 *d, const pro
         prox_vec3 gj = prox_v3_mad(g[j], -rb, d[j]);
         a[j] = prox_v3_dot(gj, c), b[j].x = prox_v3_dot(gj, t1), b[j].y = prox_v3_dot(gj, t2);
     }
-    double comb = pl_disk_min(a, b, ng, tan(fmin(rho, 1.5)));
+    double comb = pl_disk_min(a, b, ng, tan(cmin(rho, 1.5)));
     comb = (comb > 0.0 ? comb * cos(rho) : comb) + rb;
     if (rho >= 1.5) comb = -INFINITY;
-    double dn = prox_v3_norm(s->delta), dl = dn > 0.0 ? -dn * cos(fmax(0.0, angle(c, s->delta) - rho)) : 0.0;
+    double dn = prox_v3_norm(s->delta), dl = dn > 0.0 ? -dn * cos(cmax(0.0, angle(c, s->delta) - rho)) : 0.0;
     double sep = body_cap(&s->a, c, rho) + body_cap(&s->b, prox_v3_neg(c), rho) + dl;
-    return fmax(comb, sep) - PROX_TOL_PHI_ROUND * s->S;
+    return cmax(comb, sep) - PROX_TOL_PHI_ROUND * s->S;
 }
 
 typedef struct cvx_cover {
@@ -1254,7 +1269,7 @@ static void cover_tri(cvx *s, cvx_cover *cv, const prox_vec3 *q, const prox_vec3
 {
     ++cv->cells;
     prox_vec3 c = unit(prox_v3_add(prox_v3_add(q[0], q[1]), q[2]));
-    double rho = fmax(angle(c, q[0]), fmax(angle(c, q[1]), angle(c, q[2]))) * (1.0 + 1e-12) + 4.0 * DBL_EPSILON;
+    double rho = cmax(angle(c, q[0]), cmax(angle(c, q[1]), angle(c, q[2]))) * (1.0 + 1e-12) + 4.0 * DBL_EPSILON;
     double f = phi_eval(s, c), best0 = s->best_phi;
     record(s, c, f);
     if (f < best0 - cv->tol) {
@@ -1264,9 +1279,9 @@ static void cover_tri(cvx *s, cvx_cover *cv, const prox_vec3 *q, const prox_vec3
     if (!(prox_v3_dot(cv->bd, s->best_d) == 1.0)) cv->bd = s->best_d, cv->gb = phi_grad(s, s->best_d);
     prox_vec3 g[5] = {phi_grad(s, c), gq[0], gq[1], gq[2], cv->gb}, d[5] = {c, q[0], q[1], q[2], cv->bd};
     double lb = cap_bound(s, c, d, g, 5, rho);
-    if (lb >= s->best_phi - cv->tol) { cv->lb = fmin(cv->lb, lb); return; }
+    if (lb >= s->best_phi - cv->tol) { cv->lb = cmin(cv->lb, lb); return; }
     if (depth >= CVX_BB_DEPTH || cv->cells >= CVX_BB_BUDGET) {
-        cv->lb = fmin(cv->lb, lb);
+        cv->lb = cmin(cv->lb, lb);
         cv->incomplete = 1;
         return;
     }
@@ -1301,9 +1316,13 @@ static int depth_starts(cvx *s)
     prox_vec3 st[CVX_TOPK];
     int ns = s->ntop;
     for (int i = 0; i < ns; ++i) st[i] = s->td[i];
+    prox_vec3 done = {0, 0, 0}; /* the kinks near the best are searched once per best, coarsely:
+                                 * the best is refined to rounding after the starts */
     for (int i = 0; i < ns; ++i) {
         cell_newton(s, st[i]);
-        kinks_local(s, s->best_d, CVX_LOCAL);
+        if (prox_v3_dot(done, s->best_d) == 1.0) continue;
+        done = s->best_d;
+        kinks_local_tol(s, s->best_d, CVX_LOCAL, CVX_COARSE);
     }
     cell_newton(s, s->best_d);
     return s->best_phi < 0.0;
@@ -1322,6 +1341,69 @@ static void descend_best(cvx *s)
         kinks_local(s, s->best_d, CVX_LOCAL);
         if (!(s->best_phi < f0)) break;
     }
+}
+
+/* A ball inside body b touching its boundary point x (outward normal n): the largest offset r <= rmax
+ * (to 2^-10 of rmax) whose centre x - r n lies at depth >= r less the rounding slack
+ * (prox_body_boundary); *rad receives that centre's depth less the slack, a radius proved to fit. The
+ * depth in a convex body is concave, so the offsets that fit form an interval [0, r*]; an edge, rim
+ * or vertex point fits none (returns 0). */
+static double tangent_ball(const prox_body *b, prox_vec3 x, prox_vec3 n, double rmax, double slack, double *rad)
+{
+    prox_vec3 q;
+    *rad = 0.0;
+    if (!(rmax > 0.0)) return 0.0;
+    double dep = -prox_body_boundary(b, prox_v3_mad(x, -rmax, n), &q) - slack;
+    if (dep >= rmax - 2.0 * slack) { *rad = dep; return rmax; }
+    double lo = 0.0, hi = rmax;
+    for (int i = 0; i < 10; ++i) {
+        double m = 0.5 * (lo + hi);
+        dep = -prox_body_boundary(b, prox_v3_mad(x, -m, n), &q) - slack;
+        if (dep >= m - 2.0 * slack) lo = m, *rad = dep;
+        else hi = m;
+    }
+    return lo;
+}
+
+/* A lower bound on the depth from two tangent balls at the witnesses p1 (on A, outward normal n) and
+ * p2 (on B, outward normal -n): A - B contains the ball of centre (p1 - ra n) - (p2 + rb n) and radius
+ * the sum of the two radii proved, hence the ball about the origin of that radius less |centre|.
+ * With p1 - p2 = phi n at the optimum it is phi itself, to rounding, once ra + rb reaches phi: a
+ * shallow contact of smooth or flat parts is proved without the cover. -INFINITY when no ball fits. */
+static double ball_bound(const cvx *s, prox_vec3 n, prox_vec3 p1, prox_vec3 p2)
+{
+    double phi = s->best_phi, slack = PROX_TOL_PHI_ROUND * s->S, qa, qb = 0.0;
+    double ra = tangent_ball(&s->a, p1, n, phi, slack, &qa);
+    double rb = ra < phi ? tangent_ball(&s->b, p2, prox_v3_neg(n), phi - ra, slack, &qb) : 0.0;
+    if (!(qa + qb > 0.0)) return -INFINITY;
+    prox_vec3 c = prox_v3_sub(prox_v3_mad(p1, -ra, n), prox_v3_mad(p2, rb, n));
+    return qa + qb - prox_v3_norm(c) - slack;
+}
+
+static void finish_overlap(cvx *s, prox_signed_result *r);
+
+/* 1 when the tangent balls at the answer's witnesses prove its depth (info filled). */
+static int ball_certified(const cvx *s, const prox_signed_result *r, prox_convex_info *info)
+{
+    double lb = ball_bound(s, r->normal, r->p1, r->p2);
+    if (!(lb >= s->best_phi - PROX_TOL_DEPTH_CERT * s->S)) return 0;
+    info->lower = fmin(lb, s->best_phi);
+    info->upper = -r->sd;
+    info->certified = 1;
+    return 1;
+}
+
+/* The first try at a depth: the best of the centre line and the icosahedron's vertices, Newton and
+ * the local kinks from there, proved by the tangent balls; most shallow contacts end here. Returns 0
+ * (and leaves the best direction for the global search) when the balls do not prove it. */
+static int depth_quick(cvx *s, prox_signed_result *r, prox_convex_info *info)
+{
+    if (prox_v3_norm2(s->delta) > 0.0) consider(s, s->delta), consider(s, prox_v3_neg(s->delta));
+    for (int i = 0; i < 12; ++i) consider(s, ico_vertex(i));
+    descend_best(s);
+    if (!(s->best_phi > 0.0)) return 0;
+    finish_overlap(s, r);
+    return ball_certified(s, r, info);
 }
 
 /* The cover of the sphere: a proven lower bound on the depth (convex.h). */
@@ -1389,12 +1471,23 @@ static void finish_overlap(cvx *s, prox_signed_result *r)
     }
 }
 
-/* The signed answer of the scaled pair (unit-scale units). */
-static prox_signed_result signed_scaled(cvx *s, prox_convex_info *info)
+/* A pair that GJK found overlapping but a direction of negative phi separates (touching to
+ * rounding): the disjoint answer. */
+static prox_signed_result signed_touching(cvx *s, prox_convex_info *info, const gjk_out *g)
 {
     prox_signed_result r = {0};
     r.status = PROX_OK;
-    gjk_out g = gjk_run(s);
+    cvx_answer a = solve_disjoint(s, g, info);
+    r.sd = a.upper, r.normal = a.n, r.p1 = a.p1, r.p2 = a.p2;
+    info->intersect = 0, info->lower = a.lower, info->upper = a.upper;
+    return r;
+}
+
+/* The signed answer of the scaled pair (unit-scale units) after GJK's run g. */
+static prox_signed_result signed_scaled(cvx *s, prox_convex_info *info, gjk_out g, int full)
+{
+    prox_signed_result r = {0};
+    r.status = PROX_OK;
     if (!(s->best_phi < 0.0) && g.verdict != 0) depth_starts(s); /* a stalled GJK: look wider */
     if (s->best_phi < 0.0 && g.verdict != 0) {
         cvx_answer a = solve_disjoint(s, &g, info);
@@ -1403,19 +1496,49 @@ static prox_signed_result signed_scaled(cvx *s, prox_convex_info *info)
         return r;
     }
     info->intersect = 1;
-    if (g.verdict == 0 && depth_starts(s)) { /* rounding made GJK enclose a touching pair */
-        cvx_answer a = solve_disjoint(s, &g, info);
-        r.sd = a.upper, r.normal = a.n, r.p1 = a.p1, r.p2 = a.p2;
-        info->intersect = 0, info->lower = a.lower, info->upper = a.upper;
-        return r;
-    }
+    if (!full && g.verdict == 0 && depth_quick(s, &r, info)) return r;
+    if (g.verdict == 0 && depth_starts(s)) return signed_touching(s, info, &g);
+    descend_best(s);
+    finish_overlap(s, &r);
+    if (!full && ball_certified(s, &r, info)) return r;
     depth_cover(s, info);
+    if (s->best_phi < 0.0) return signed_touching(s, info, &g);
     finish_overlap(s, &r);
     info->upper = -r.sd; /* the depth reported (within PROX_TOL_TOUCH S of the best found) */
     return r;
 }
 
-prox_signed_result prox_convex_signed_ex(const prox_body *a, const prox_body *b, prox_convex_info *info)
+static int gjk_certified(const cvx *s, const gjk_out *g, cvx_answer *r);
+static int newton_certified(cvx *s, const gjk_out *g, cvx_answer *r);
+
+/* The signed answer of a scaled pair: a disjoint pair first tries the distance query's cheap
+ * certificates (GJK's pair, Newton from its direction; GJK stopped at CVX_GJK_LOOSE first when
+ * neither body has kinks), whose pair along its own direction is the answer with its normal. */
+static prox_signed_result signed_run(const prox_body *a, const prox_body *b, cvx *s, prox_convex_info *info, int full)
+{
+    if (full) return signed_scaled(s, info, gjk_run(s), 1);
+    int loose = s->nk == 0;
+    if (loose) s->gjk_rel = CVX_GJK_LOOSE;
+    gjk_out g = gjk_run(s);
+    cvx_answer e;
+    int early = g.verdict == 1 && (gjk_certified(s, &g, &e) || newton_certified(s, &g, &e));
+    if (!early && loose && g.verdict == 1) { /* to rounding, from the start */
+        prox_vec3 o;
+        double f;
+        pair_make(a, b, s, &o, &f);
+        g = gjk_run(s);
+        early = g.verdict == 1 && (gjk_certified(s, &g, &e) || newton_certified(s, &g, &e));
+    }
+    if (!early) return signed_scaled(s, info, g, 0);
+    atomic_fetch_add(&cvx_gjk_cert, 1);
+    prox_signed_result r = {0};
+    r.status = PROX_OK;
+    r.sd = e.upper, r.normal = e.n, r.p1 = e.p1, r.p2 = e.p2;
+    info->certified = 1, info->lower = e.lower, info->upper = e.upper;
+    return r;
+}
+
+static prox_signed_result signed_entry(const prox_body *a, const prox_body *b, prox_convex_info *info, int full)
 {
     prox_convex_info tmp;
     if (!info) info = &tmp;
@@ -1424,7 +1547,7 @@ prox_signed_result prox_convex_signed_ex(const prox_body *a, const prox_body *b,
     prox_vec3 o;
     double f;
     pair_make(a, b, &s, &o, &f);
-    prox_signed_result r = signed_scaled(&s, info);
+    prox_signed_result r = signed_run(a, b, &s, info, full);
     r.sd /= f;
     r.p1 = to_abs(o, f, r.p1);
     r.p2 = to_abs(o, f, r.p2);
@@ -1435,6 +1558,16 @@ prox_signed_result prox_convex_signed_ex(const prox_body *a, const prox_body *b,
     if (r.sd <= 0.0 && info->intersect && info->certified) r.certified = 1, r.sd_upper = -info->lower;
     if (r.sd > 0.0) r.sd_lower = info->lower;
     return r;
+}
+
+prox_signed_result prox_convex_signed_ex(const prox_body *a, const prox_body *b, prox_convex_info *info)
+{
+    return signed_entry(a, b, info, 0);
+}
+
+prox_signed_result prox_convex_signed_full(const prox_body *a, const prox_body *b, prox_convex_info *info)
+{
+    return signed_entry(a, b, info, 1);
 }
 
 prox_signed_result prox_convex_signed(const prox_body *a, const prox_body *b) { return prox_convex_signed_ex(a, b, NULL); }
@@ -1592,13 +1725,9 @@ prox_distance_result prox_convex_distance_ex(const prox_body *a, const prox_body
 
 prox_distance_result prox_convex_distance(const prox_body *a, const prox_body *b) { return prox_convex_distance_ex(a, b, NULL); }
 
-/* Internal, for the tests that check the early exits against the full engine (no header: declared
- * here and in those tests). */
-prox_distance_result prox_convex_distance_full(const prox_body *a, const prox_body *b, prox_convex_info *info);
 prox_distance_result prox_convex_distance_full(const prox_body *a, const prox_body *b, prox_convex_info *info)
 {
     return distance_run(a, b, info, CVX_FULL);
 }
 
-unsigned long prox_convex_gjk_certified_count(void);
 unsigned long prox_convex_gjk_certified_count(void) { return atomic_load(&cvx_gjk_cert); }

@@ -45,6 +45,15 @@ prox_signed_result prox_convex_signed(const prox_body *a, const prox_body *b);
 prox_signed_result prox_convex_signed_ex(const prox_body *a, const prox_body *b, prox_convex_info *info);
 prox_distance_result prox_convex_distance_ex(const prox_body *a, const prox_body *b, prox_convex_info *info);
 
+/* The same without the early exits (GJK's and Newton's certificates of a disjoint pair, the
+ * tangent balls of a shallow depth): the full search and its certificate, the reference the tests
+ * hold the early exits to. */
+prox_distance_result prox_convex_distance_full(const prox_body *a, const prox_body *b, prox_convex_info *info);
+prox_signed_result prox_convex_signed_full(const prox_body *a, const prox_body *b, prox_convex_info *info);
+
+/* Distance queries answered by an early exit since the start of the process (all threads). */
+unsigned long prox_convex_gjk_certified_count(void);
+
 /* How many times the slow global search has run since the start of the process (all threads): the
  * disjoint search's sweep of every kink circle when the local search could not certify (rare), and
  * the cover of the sphere that certifies a depth (every overlapping signed distance). */
