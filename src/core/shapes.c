@@ -111,6 +111,9 @@ PROX_API prox_status prox_rpp_validate(const prox_rpp *r)
 PROX_API prox_status prox_sph_validate(const prox_sph *s)
 {
     if (!s) return PROX_EINVAL_ARG;
+    /* One branch-free pass accepts a valid sphere (the range tests also fail NaN and infinities);
+     * anything else goes through the ordered checks, which name the fault. */
+    if (coord3_ok(s->center) & size_ok(s->radius)) return PROX_OK;
     if (!finite3(s->center) || !isfinite(s->radius)) return PROX_EINVAL_NONFINITE;
     if (!(s->radius > 0.0)) return PROX_EINVAL_RADIUS;
     if (!coord3_ok(s->center) || !size_ok(s->radius)) return PROX_EINVAL_RANGE;

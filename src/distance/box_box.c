@@ -8,12 +8,16 @@
  * vertex-solid or edge-edge, so min over 16 point-box and 144 segment-segment distances is exact; the
  * candidates are pruned by projection lower bounds along the SAT axis and the best pair's direction
  * (docs/algorithms/box_speed.md), which leaves that minimum unchanged.
- * Fast path before all of this (docs/algorithms/polytopes.md, "BOX-BOX fast path"): two rounds of
- * alternating projections find a common point of most intersecting pairs; for disjoint pairs the
- * last direction of the iterates selects one support feature of each box, whose exact distance is
- * accepted when a separating gap proves it (gap >= distance - PROX_TOL_CERT S). Only undecided pairs
- * reach the 15 axes and the pruned search, so every answer is still exact or certified. */
+ * Fast path before the pruned search (docs/algorithms/polytopes.md, "BOX-BOX fast path"): the segment
+ * between the centres finds a common point of most intersecting pairs; then the 15 axes, whose best
+ * axis of a disjoint pair selects a face and the other box's support vertex, or two support edges,
+ * whose exact distance is accepted when the gap along that axis proves it (gap >= distance -
+ * PROX_TOL_CERT S: face-vertex and crossing edge-edge contacts). Alternating projections and the
+ * support features of a direction (certified the same way) take most of the rest. Only undecided
+ * pairs reach the pruned search, so every answer is still exact or certified. */
 #include <stddef.h>
+#include <stdint.h>
+#include <string.h>
 
 #include "core/tol.h"
 #include "distance/box_internal.h"
@@ -46,48 +50,81 @@ static int sat_axis(const prox_bframe *A, const prox_bframe *B, int i, prox_vec3
 
 /* Minimum overlap over the 15 axes and the axis achieving it (oriented from A towards B): the same
  * values as axis_overlap on each sat_axis, from the dot products of the two frames and the centre
- * offset computed once (a cross axis c = a_i x b_j is used unnormalised: its overlap divided by |c|
- * at the end; c . a_i = c . b_j = 0). */
-static double sat_min_overlap(const prox_bframe *A, const prox_bframe *B, int *best_i, prox_vec3 *best_L)
+ * offset computed once. The 6 face axes and the 9 cross axes are two steps (sat_faces, sat_cross), so
+ * that a pair certified along a face axis skips the cross products. A cross axis c = a_i x b_j is
+ * used unnormalised (c . a_i = c . b_j = 0): its overlap o_c / |c| is compared without a square root
+ * or a division (below), and only a new best is divided. The pair is at unit scale (unit_pair), where
+ * no square here under- or overflows. */
+typedef struct sat_state {
+    prox_vec3 D;                  /* m_B - m_A */
+    double R[3][3], da[3], db[3]; /* |a_i . b_j|, D . a_i, D . b_j */
+    double best, best_l;          /* least overlap so far; |c| of its cross axis */
+    int bi;                       /* its axis */
+    prox_vec3 best_c;             /* its cross axis, oriented along D */
+} sat_state;
+
+static void sat_faces(const prox_bframe *A, const prox_bframe *B, sat_state *t)
 {
-    prox_vec3 D = prox_v3_sub(B->m, A->m);
-    double R[3][3], da[3], db[3], ga[3][3], gb[3][3], best = INFINITY;
+    t->D = prox_v3_sub(B->m, A->m);
+    t->best = INFINITY;
+    t->best_l = 1.0;
+    t->bi = 0;
+    t->best_c = prox_v3(0, 0, 0);
     for (int i = 0; i < 3; ++i) {
-        da[i] = prox_v3_dot(D, A->a[i]);
-        db[i] = prox_v3_dot(D, B->a[i]);
-        for (int j = 0; j < 3; ++j) {
-            R[i][j] = fabs(prox_v3_dot(A->a[i], B->a[j]));
-            ga[i][j] = fabs(prox_v3_dot(A->a[i], A->a[j]));
-            gb[i][j] = fabs(prox_v3_dot(B->a[i], B->a[j]));
-        }
+        t->da[i] = prox_v3_dot(t->D, A->a[i]);
+        t->db[i] = prox_v3_dot(t->D, B->a[i]);
+        for (int j = 0; j < 3; ++j) t->R[i][j] = fabs(prox_v3_dot(A->a[i], B->a[j]));
     }
     for (int i = 0; i < 3; ++i) { /* A's face normals */
-        double o = A->h[0] * ga[i][0] + A->h[1] * ga[i][1] + A->h[2] * ga[i][2] + B->h[0] * R[i][0] + B->h[1] * R[i][1] +
-                   B->h[2] * R[i][2] - fabs(da[i]);
-        if (o < best) best = o, *best_i = i, *best_L = da[i] >= 0.0 ? A->a[i] : prox_v3_neg(A->a[i]);
+        double ga = 0.0;
+        for (int k = 0; k < 3; ++k) ga += A->h[k] * fabs(prox_v3_dot(A->a[i], A->a[k]));
+        double o = ga + B->h[0] * t->R[i][0] + B->h[1] * t->R[i][1] + B->h[2] * t->R[i][2] - fabs(t->da[i]);
+        if (o < t->best) t->best = o, t->bi = i;
     }
     for (int j = 0; j < 3; ++j) { /* B's face normals */
-        double o = A->h[0] * R[0][j] + A->h[1] * R[1][j] + A->h[2] * R[2][j] + B->h[0] * gb[j][0] + B->h[1] * gb[j][1] +
-                   B->h[2] * gb[j][2] - fabs(db[j]);
-        if (o < best) best = o, *best_i = 3 + j, *best_L = db[j] >= 0.0 ? B->a[j] : prox_v3_neg(B->a[j]);
+        double gb = 0.0;
+        for (int k = 0; k < 3; ++k) gb += B->h[k] * fabs(prox_v3_dot(B->a[j], B->a[k]));
+        double o = A->h[0] * t->R[0][j] + A->h[1] * t->R[1][j] + A->h[2] * t->R[2][j] + gb - fabs(t->db[j]);
+        if (o < t->best) t->best = o, t->bi = 3 + j;
     }
+}
+
+static void sat_cross(const prox_bframe *A, const prox_bframe *B, sat_state *t)
+{
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
             prox_vec3 c = prox_v3_cross(A->a[i], B->a[j]);
-            double l = prox_v3_norm(c);
-            if (!(l > PROX_TOL_EDGE_AXIS)) continue; /* near-parallel edges (standard SAT practice): see core/tol.h */
+            double l2 = prox_v3_norm2(c); /* at unit scale: no under- or overflow */
+            if (!(l2 > PROX_TOL_EDGE_AXIS * PROX_TOL_EDGE_AXIS)) continue; /* near-parallel edges: see core/tol.h */
             int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-            double cd = prox_v3_dot(c, D);
-            double o = (A->h[i1] * fabs(prox_v3_dot(c, A->a[i1])) + A->h[i2] * fabs(prox_v3_dot(c, A->a[i2])) +
-                        B->h[j1] * fabs(prox_v3_dot(c, B->a[j1])) + B->h[j2] * fabs(prox_v3_dot(c, B->a[j2])) - fabs(cd)) /
-                       l;
-            if (o < best) {
-                best = o;
-                *best_i = 6 + 3 * i + j;
-                *best_L = prox_v3_divs(cd >= 0.0 ? c : prox_v3_neg(c), l);
+            double cd = prox_v3_dot(c, t->D);
+            double o = A->h[i1] * fabs(prox_v3_dot(c, A->a[i1])) + A->h[i2] * fabs(prox_v3_dot(c, A->a[i2])) +
+                       B->h[j1] * fabs(prox_v3_dot(c, B->a[j1])) + B->h[j2] * fabs(prox_v3_dot(c, B->a[j2])) - fabs(cd);
+            /* o / l < best as o |o| < best |best| l^2 (x |x| is increasing): no square root in the loop */
+            if (o * fabs(o) < t->best * fabs(t->best) * l2) {
+                t->best_l = sqrt(l2);
+                t->best = o / t->best_l, t->bi = 6 + 3 * i + j, t->best_c = cd >= 0.0 ? c : prox_v3_neg(c);
             }
         }
-    return best;
+}
+
+/* The least overlap so far, its axis index and unit axis oriented from A towards B. */
+static double sat_result(const prox_bframe *A, const prox_bframe *B, const sat_state *t, int *best_i, prox_vec3 *best_L)
+{
+    int bi = t->bi;
+    *best_i = bi;
+    if (bi < 3) *best_L = t->da[bi] >= 0.0 ? A->a[bi] : prox_v3_neg(A->a[bi]);
+    else if (bi < 6) *best_L = t->db[bi - 3] >= 0.0 ? B->a[bi - 3] : prox_v3_neg(B->a[bi - 3]);
+    else *best_L = prox_v3_divs(t->best_c, t->best_l);
+    return t->best;
+}
+
+static double sat_min_overlap(const prox_bframe *A, const prox_bframe *B, int *best_i, prox_vec3 *best_L)
+{
+    sat_state t;
+    sat_faces(A, B, &t);
+    sat_cross(A, B, &t);
+    return sat_result(A, B, &t, best_i, best_L);
 }
 
 static double bb_scale(const prox_bframe *A, const prox_bframe *B)
@@ -435,14 +472,22 @@ static int certified_distance(const prox_bframe *A, const prox_bframe *B, prox_v
 }
 
 /* The segment between the centres meets both boxes; when the part in A (from A's centre) and the part
- * in B (to B's centre) overlap, their common stretch is in both: 1 and its midpoint *x. */
+ * in B (to B's centre) overlap, their common stretch is in both: 1 and its midpoint *x. With
+ * D = m_B - m_A, the point m_A + s D is in A (enlarged by tol) for s <= a1 = min_k (h_k + tol) / |D.a_k|
+ * and in B for s >= b0 = 1 - min_k (h_k + tol) / |D.b_k| (Liang-Barsky from the centres, where the
+ * local coordinates are 0 and +-D.a_k; a zero D.a_k gives no bound: the quotient is infinite). */
 static int centre_line(const prox_bframe *A, const prox_bframe *B, double tol, prox_vec3 *x)
 {
-    double a0, a1, b0, b1;
-    if (!prox_bframe_clip_segment(A, A->m, B->m, tol, &a0, &a1) || !prox_bframe_clip_segment(B, A->m, B->m, tol, &b0, &b1))
-        return 0;
+    prox_vec3 D = prox_v3_sub(B->m, A->m);
+    double a1 = 1.0, tb = 1.0;
+    for (int k = 0; k < 3; ++k) {
+        double ta = (A->h[k] + tol) / fabs(prox_v3_dot(D, A->a[k])), t = (B->h[k] + tol) / fabs(prox_v3_dot(D, B->a[k]));
+        a1 = ta < a1 ? ta : a1;
+        tb = t < tb ? t : tb;
+    }
+    double b0 = 1.0 - tb;
     if (b0 > a1) return 0;
-    *x = prox_v3_mad(A->m, 0.5 * (b0 + a1), prox_v3_sub(B->m, A->m));
+    *x = prox_v3_mad(A->m, 0.5 * (b0 + a1), D);
     return 1;
 }
 
@@ -508,9 +553,6 @@ PROX_API prox_distance_result prox_box_box_distance(const prox_box *a, const pro
     return prox_box_pair_distance(&A, &B);
 }
 
-/* Fast path first (docs/algorithms/box_speed.md): alternating projections find a common point of most
- * intersecting pairs; for disjoint ones their last direction seeds the support features, whose exact
- * distance a gap certifies. Otherwise the 15 axes decide, and the pruned exhaustive search answers. */
 /* The pair in A's frame at unit scale: centres moved by -A's centre and sizes multiplied by *u, a
  * power of two (exact), so that the scale is 1 .. 2 and no product of the solvers over- or underflows
  * (a segment pair's |d1|^2 |d2|^2 at sizes 1e-90 is 1e-360). */
@@ -520,12 +562,22 @@ static void unit_pair(const prox_bframe *pA, const prox_bframe *pB, prox_bframe 
     *B = *pB;
     B->m = prox_v3_sub(pB->m, pA->m);
     A->m = prox_v3(0, 0, 0);
-    *u = ldexp(1.0, -ilogb(bb_scale(A, B)));
+    double s = bb_scale(A, B);
+    uint64_t bits;
+    memcpy(&bits, &s, sizeof bits);
+    int e = (int)((bits >> 52) & 0x7ff) - 1023; /* ilogb(s) of a normal s, without a libm call */
+    if (e > -1022 && e < 1023) {
+        uint64_t ub = (uint64_t)(1023 - e) << 52;
+        memcpy(u, &ub, sizeof ub);
+    } else {
+        *u = ldexp(1.0, -ilogb(s));
+    }
     B->m = prox_v3_scale(B->m, *u);
     for (int k = 0; k < 3; ++k) A->h[k] *= *u, B->h[k] *= *u;
 }
 
-static prox_vec3 unit_back(prox_vec3 p, double u, prox_vec3 o) { return prox_v3_add(prox_v3_scale(p, 1.0 / u), o); }
+/* Back from unit scale: iu = 1 / u is exact (a power of two), so p * iu is p / u bit for bit. */
+static prox_vec3 unit_back(prox_vec3 p, double iu, prox_vec3 o) { return prox_v3_add(prox_v3_scale(p, iu), o); }
 
 static prox_distance_result unit_distance(const prox_bframe *pA, const prox_bframe *pB);
 
@@ -535,31 +587,89 @@ prox_distance_result prox_box_pair_distance(const prox_bframe *pA, const prox_bf
     double u;
     unit_pair(pA, pB, &A, &B, &u);
     prox_distance_result r = unit_distance(&A, &B);
-    r.distance /= u;
-    r.certificate_gap /= u;
-    r.p1 = unit_back(r.p1, u, pA->m);
-    r.p2 = unit_back(r.p2, u, pA->m);
+    double iu = 1.0 / u;
+    r.distance *= iu;
+    r.certificate_gap *= iu;
+    r.p1 = unit_back(r.p1, iu, pA->m);
+    r.p2 = unit_back(r.p2, iu, pA->m);
     return r;
 }
 
-/* prox_box_pair_distance of a pair at unit scale. */
+/* The closest pair realised by the best separating axis i (unit L from A towards B, gap g > 0 along
+ * it recomputed by bb_gap: a near-parallel cross axis's overlap from sat_min_overlap carries a
+ * rounding of eps S / |a_i x b_j|, up to 1e-6 S): a face axis pairs that face with the other box's
+ * support vertex along it, a cross axis the two support edges. Their exact distance d is an upper
+ * bound and g a lower bound; accepted, certified, when d - g <= PROX_TOL_CERT S and d > tol (a
+ * face-vertex or crossing edge-edge contact, most disjoint pairs). Returns 0 otherwise (vertex-vertex,
+ * vertex-edge and parallel contacts, where no axis of the 15 is the contact direction). */
+static int sat_certified(const prox_bframe *A, const prox_bframe *B, int i, prox_vec3 L, double g, double S, double tol,
+                         prox_distance_result *r)
+{
+    prox_vec3 p1, p2;
+    double d;
+    if (i < 3) { /* face of A: B's support vertex along -L */
+        p2 = prox_bframe_vertex(B, support_vertex(B, prox_v3_neg(L)));
+        p1 = prox_bframe_closest(A, p2, &d);
+    } else if (i < 6) { /* face of B: A's support vertex along L */
+        p1 = prox_bframe_vertex(A, support_vertex(A, L));
+        p2 = prox_bframe_closest(B, p1, &d);
+    } else { /* edge a_ea of A against edge b_eb of B, each through its support vertex */
+        int ea = (i - 6) / 3, eb = (i - 6) % 3;
+        int va = support_vertex(A, L) & ~(1 << ea), vb = support_vertex(B, prox_v3_neg(L)) & ~(1 << eb);
+        prox_vec3 pa = prox_bframe_vertex(A, va), pb = prox_bframe_vertex(B, vb);
+        d = prox_seg_seg(pa, prox_v3_mad(pa, 2.0 * A->h[ea], A->a[ea]), pb, prox_v3_mad(pb, 2.0 * B->h[eb], B->a[eb]), &p1,
+                         &p2);
+    }
+    if (!(d > tol) || d - g > PROX_TOL_CERT * S) return 0;
+    r->distance = d;
+    r->p1 = p1;
+    r->p2 = p2;
+    r->certificate_gap = g;
+    r->certified = 1;
+    return 1;
+}
+
+/* prox_box_pair_distance of a pair at unit scale (docs/algorithms/box_speed.md). In order: the centre
+ * segment (a common point); the 15 axes and the features of the best one (a certified distance); for
+ * a pair less than tol apart along every axis, alternating projections (a common point) and the
+ * support features along their direction; no separating axis: a common point on an edge; else the
+ * support features along the best axis, three rounds, and the pruned exhaustive search. */
 static prox_distance_result unit_distance(const prox_bframe *pA, const prox_bframe *pB)
 {
     prox_distance_result r = {0};
     const prox_bframe A = *pA, B = *pB;
     double S = bb_scale(&A, &B), tol = PROX_QUERY_REL_TOL * S;
     prox_vec3 y, z;
-    if (centre_line(&A, &B, tol, &y) || alternate(&A, &B, tol, &y, &z)) {
+    if (centre_line(&A, &B, tol, &y)) {
         r.intersect = 1;
         r.p1 = r.p2 = y;
         r.certified = 1;
         return r;
     }
-    double dz = prox_v3_dist(z, y);
-    if (dz > 0.0 && certified_distance(&A, &B, prox_v3_divs(prox_v3_sub(z, y), dz), S, 1, &r)) return r;
     int i = 0;
     prox_vec3 L = {0, 0, 0};
-    double o = sat_min_overlap(&A, &B, &i, &L);
+    sat_state t;
+    sat_faces(&A, &B, &t); /* a face-vertex contact is certified before the cross axes are formed */
+    double o = sat_result(&A, &B, &t, &i, &L);
+    double g = o < 0.0 ? bb_gap(&A, &B, L) : -INFINITY; /* a proved gap along the best axis */
+    if (g > tol && sat_certified(&A, &B, i, L, g, S, tol, &r)) return r;
+    sat_cross(&A, &B, &t);
+    if (t.bi != i) {
+        o = sat_result(&A, &B, &t, &i, &L);
+        g = o < 0.0 ? bb_gap(&A, &B, L) : -INFINITY;
+        if (g > tol && sat_certified(&A, &B, i, L, g, S, tol, &r)) return r;
+    }
+    int apart = g > tol; /* more than tol apart: no common point within tol to look for */
+    if (!apart && alternate(&A, &B, tol, &y, &z)) {
+        r.intersect = 1;
+        r.p1 = r.p2 = y;
+        r.certified = 1;
+        return r;
+    }
+    if (!apart && o < 0.0) {
+        double dz = prox_v3_dist(z, y);
+        if (dz > 0.0 && certified_distance(&A, &B, prox_v3_divs(prox_v3_sub(z, y), dz), S, 1, &r)) return r;
+    }
     if (o >= 0.0) { /* no separating axis: the boxes intersect */
         r.intersect = 1;
         r.certified = common_point(&A, &B, tol, &r.p1);
@@ -686,10 +796,11 @@ prox_signed_result prox_box_pair_signed(const prox_bframe *pA, const prox_bframe
     double u;
     unit_pair(pA, pB, &A, &B, &u);
     prox_signed_result r = unit_signed(&A, &B);
-    r.sd /= u;
-    r.sd_lower /= u;
-    r.p1 = unit_back(r.p1, u, pA->m);
-    r.p2 = unit_back(r.p2, u, pA->m);
+    double iu = 1.0 / u;
+    r.sd *= iu;
+    r.sd_lower *= iu;
+    r.p1 = unit_back(r.p1, iu, pA->m);
+    r.p2 = unit_back(r.p2, iu, pA->m);
     return r;
 }
 

@@ -27,27 +27,30 @@ PROX_API prox_signed_result prox_sph_sph_signed_distance(const prox_sph *a, cons
     return r;
 }
 
+/* The distance on its own (the hot path of every sphere pair): one square root and no signed result
+ * formed first. Same answers as the signed solver: sd = d - R_A - R_B along the unit n = (c_B - c_A) / d,
+ * witnesses c_A + R_A n and c_B - R_B n, gap along n exactly sd. */
 PROX_API prox_distance_result prox_sph_sph_distance(const prox_sph *a, const prox_sph *b)
 {
     prox_distance_result r = {0};
-    prox_signed_result s = prox_sph_sph_signed_distance(a, b);
-    r.status = s.status;
+    r.status = prox_valid2(prox_sph_validate(a), prox_sph_validate(b));
     if (r.status != PROX_OK) return r;
-    double d = prox_v3_dist(a->center, b->center);
-    double scale = fmax(d, 2.0 * fmax(a->radius, b->radius));
-    if (s.sd > PROX_QUERY_REL_TOL * scale) { /* tangency within tol counts as touching */
-        r.distance = s.sd;
-        r.p1 = s.p1;
-        r.p2 = s.p2;
-        r.certificate_gap = s.sd; /* the support gap along the line of centres is exactly sd */
+    prox_vec3 v = prox_v3_sub(b->center, a->center);
+    double d = prox_v3_norm(v), ra = a->radius, rb = b->radius, sd = d - ra - rb;
+    double rmax = ra > rb ? ra : rb, scale = d > 2.0 * rmax ? d : 2.0 * rmax; /* no NaN: validated */
+    if (sd > PROX_QUERY_REL_TOL * scale) { /* tangency within tol counts as touching; d > 0 here */
+        prox_vec3 n = prox_v3_divs(v, d);
+        r.distance = sd;
+        r.p1 = prox_v3_mad(a->center, ra, n);
+        r.p2 = prox_v3_mad(b->center, -rb, n);
+        r.certificate_gap = sd; /* the support gap along the line of centres is exactly sd */
         return r;
     }
     /* Overlap: the point of the segment of centres at the same depth in both spheres is common. */
-    double t = d > 0.0 ? a->radius / (a->radius + b->radius) : 0.0;
     r.intersect = 1;
-    r.p1 = r.p2 = prox_v3_mad(a->center, t * d, s.normal);
+    r.p1 = r.p2 = prox_v3_mad(a->center, ra / (ra + rb), v);
     /* Nested spheres: the smaller centre is common. */
-    if (d + a->radius <= b->radius) r.p1 = r.p2 = a->center;
-    else if (d + b->radius <= a->radius) r.p1 = r.p2 = b->center;
+    if (d + ra <= rb) r.p1 = r.p2 = a->center;
+    else if (d + rb <= ra) r.p1 = r.p2 = b->center;
     return r;
 }

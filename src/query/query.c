@@ -280,6 +280,7 @@ PROX_API prox_distance_result prox_shape_distance(const prox_shape *a, const pro
 {
     prox_distance_result r = {0};
     if ((r.status = check_kinds(a, b)) != PROX_OK) return r;
+    if (a->kind == PROX_SHAPE_SPH && b->kind == PROX_SHAPE_SPH) return prox_sph_sph_distance(&a->u.sph, &b->u.sph);
     switch (route_of(a->kind, b->kind)) {
     case ROUTE_SPH_B: return prox_query_sph_distance(a, &b->u.sph, 0);
     case ROUTE_SPH_A: return mirror_d(prox_query_sph_distance(b, &a->u.sph, 1));
