@@ -30,6 +30,7 @@
  * at its best direction), each accepted only when -phi along the pair's own direction meets it. */
 #include "convex.h"
 
+#include "core/pl_disk.h"
 #include "core/plane2.h"
 #include "core/tol.h"
 
@@ -1189,57 +1190,16 @@ static double body_cap(const prox_body *b, prox_vec3 c, double rho)
     }
 }
 
-/* max_j a_j + b_j . x (2D) over the nj planes. */
-static double pl_max(const double *a, const v2 *b, int nj, v2 x)
-{
-    double m = -INFINITY;
-    for (int j = 0; j < nj; ++j) m = cmax(m, a[j] + prox_v2_dot(b[j], x));
-    return m;
-}
-
-/* Exact minimum over the disk |x| <= r of the convex piecewise-linear M(x) = max_j a_j + b_j . x: at a
- * vertex of the arrangement inside the disk, at a single plane's lowest point on the circle, or where
- * two planes cross on the circle. */
-static double pl_disk_min(const double *a, const v2 *b, int nj, double r)
-{
-    double m = INFINITY;
-    for (int j = 0; j < nj; ++j) {
-        double bn = prox_v2_norm(b[j]);
-        v2 x = {0, 0};
-        if (bn > 0.0) x.x = -b[j].x * r / bn, x.y = -b[j].y * r / bn;
-        m = cmin(m, pl_max(a, b, nj, x));
-        for (int k = j + 1; k < nj; ++k) {
-            v2 e = prox_v2_sub(b[j], b[k]);
-            double ee = prox_v2_dot(e, e), al = a[j] - a[k];
-            if (!(ee > 0.0)) continue;
-            v2 x0 = {-al * e.x / ee, -al * e.y / ee};
-            double h2 = r * r - prox_v2_dot(x0, x0);
-            if (h2 >= 0.0) {
-                double h = sqrt(h2 / ee);
-                v2 xp = {x0.x - h * e.y, x0.y + h * e.x}, xm = {x0.x + h * e.y, x0.y - h * e.x};
-                m = cmin(m, cmin(pl_max(a, b, nj, xp), pl_max(a, b, nj, xm)));
-            }
-            for (int l = k + 1; l < nj; ++l) {
-                v2 f = prox_v2_sub(b[j], b[l]);
-                double det = prox_v2_cross(e, f), rl = a[l] - a[j], rk = a[k] - a[j];
-                if (!(fabs(det) > 0.0)) continue;
-                v2 x3 = {(rk * f.y - rl * e.y) / det, (e.x * rl - f.x * rk) / det};
-                if (prox_v2_dot(x3, x3) <= r * r) m = cmin(m, pl_max(a, b, nj, x3));
-            }
-        }
-    }
-    return m;
-}
-
 /* A lower bound on phi over the cap of radius rho around unit c, from points g_j of P (support
  * points: h_P(D) >= g_j . D for every D): with D = (c + x) / |c + x|, |x| <= tan rho, x across c,
  * phi(D) >= M(x) / |c + x| for M(x) = max_j g_j . (c + x), so the bound is min M over the disk times
  * cos rho (when positive). The better of that and the sum of each term's own minimum over the cap. */
-static double cap_bound(const cvx *s, prox_vec3 c, const prox_vec3 *d, const prox_vec3 *g, int ng, double rho)
+static double cap_bound(const cvx *s, prox_vec3 c, const prox_vec3 *d, const prox_vec3 *g, int ng, double rho, double T, int need)
 {
     /* a sphere is its centre plus a ball: P = P' + ball(rb) and h_P = h_P' + rb on the unit sphere,
      * exactly; only h_P' is bounded by its planes (which would lose rb rho^2 / 2 on the ball) */
     double rb = (s->a.kind == PROX_BODY_SPH ? s->a.r : 0.0) + (s->b.kind == PROX_BODY_SPH ? s->b.r : 0.0);
+    double round = PROX_TOL_PHI_ROUND * s->S, lb = -INFINITY, r = 0.0, cr = 1.0;
     prox_vec3 t1 = prox_v3_any_perp(c), t2 = prox_v3_cross(c, t1);
     double a[8];
     v2 b[8];
@@ -1247,12 +1207,24 @@ static double cap_bound(const cvx *s, prox_vec3 c, const prox_vec3 *d, const pro
         prox_vec3 gj = prox_v3_mad(g[j], -rb, d[j]);
         a[j] = prox_v3_dot(gj, c), b[j].x = prox_v3_dot(gj, t1), b[j].y = prox_v3_dot(gj, t2);
     }
-    double comb = pl_disk_min(a, b, ng, tan(cmin(rho, 1.5)));
-    comb = (comb > 0.0 ? comb * cos(rho) : comb) + rb;
-    if (rho >= 1.5) comb = -INFINITY;
+    /* the bounds from the cheapest up, each returned once it reaches T (the cover's threshold): the
+     * best single plane's own minimum a_j - |b_j| r over the disk; whether their combination stays
+     * at or above T on the disk; each body's own minimum over the cap. The exact minimum of the
+     * combination only when the caller needs the value below T (need). */
+    if (rho < 1.5) {
+        r = tan(rho), cr = cos(rho);
+        double one = -INFINITY;
+        for (int j = 0; j < ng; ++j) one = cmax(one, a[j] - prox_v2_norm(b[j]) * r);
+        lb = (one > 0.0 ? one * cr : one) + rb - round;
+        if (lb >= T) return lb;
+        double tt = T - rb + round; /* M cr + rb - round >= T for M >= mt (M <= 0: no scaling) */
+        if (prox_pl_disk_above(a, b, ng, r, tt > 0.0 ? tt / cr : tt)) return T;
+    }
     double dn = prox_v3_norm(s->delta), dl = dn > 0.0 ? -dn * cos(cmax(0.0, angle(c, s->delta) - rho)) : 0.0;
-    double sep = body_cap(&s->a, c, rho) + body_cap(&s->b, prox_v3_neg(c), rho) + dl;
-    return cmax(comb, sep) - PROX_TOL_PHI_ROUND * s->S;
+    lb = cmax(lb, body_cap(&s->a, c, rho) + body_cap(&s->b, prox_v3_neg(c), rho) + dl - round);
+    if (lb >= T || !need || !(rho < 1.5)) return lb;
+    double comb = prox_pl_disk_min(a, b, ng, r);
+    return cmax(lb, (comb > 0.0 ? comb * cr : comb) + rb - round);
 }
 
 typedef struct cvx_cover {
@@ -1268,19 +1240,22 @@ typedef struct cvx_cover {
 static void cover_tri(cvx *s, cvx_cover *cv, const prox_vec3 *q, const prox_vec3 *gq, int depth)
 {
     ++cv->cells;
-    prox_vec3 c = unit(prox_v3_add(prox_v3_add(q[0], q[1]), q[2]));
-    double rho = cmax(angle(c, q[0]), cmax(angle(c, q[1]), angle(c, q[2]))) * (1.0 + 1e-12) + 4.0 * DBL_EPSILON;
-    double f = phi_eval(s, c), best0 = s->best_phi;
+    prox_vec3 c = unit(prox_v3_add(prox_v3_add(q[0], q[1]), q[2])), gc = phi_grad(s, c);
+    /* the cap's radius from the longest chord x: the angle 2 asin(x / 2) <= x / sqrt(1 - x^2 / 4) */
+    double x2 = cmax(prox_v3_norm2(prox_v3_sub(c, q[0])), cmax(prox_v3_norm2(prox_v3_sub(c, q[1])), prox_v3_norm2(prox_v3_sub(c, q[2]))));
+    double rho = sqrt(x2 / cmax(1.0 - 0.25 * x2, 0.25)) * (1.0 + 1e-12) + 4.0 * DBL_EPSILON;
+    double f = prox_v3_dot(gc, c), best0 = s->best_phi; /* phi(c) = h_P(c), from its support point */
     record(s, c, f);
     if (f < best0 - cv->tol) {
         cell_newton(s, c);
         kinks_local(s, s->best_d, CVX_LOCAL);
     }
     if (!(prox_v3_dot(cv->bd, s->best_d) == 1.0)) cv->bd = s->best_d, cv->gb = phi_grad(s, s->best_d);
-    prox_vec3 g[5] = {phi_grad(s, c), gq[0], gq[1], gq[2], cv->gb}, d[5] = {c, q[0], q[1], q[2], cv->bd};
-    double lb = cap_bound(s, c, d, g, 5, rho);
+    prox_vec3 g[5] = {gc, gq[0], gq[1], gq[2], cv->gb}, d[5] = {c, q[0], q[1], q[2], cv->bd};
+    int last = depth >= CVX_BB_DEPTH || cv->cells >= CVX_BB_BUDGET; /* no split: the bound is kept */
+    double lb = cap_bound(s, c, d, g, 5, rho, s->best_phi - cv->tol, last);
     if (lb >= s->best_phi - cv->tol) { cv->lb = cmin(cv->lb, lb); return; }
-    if (depth >= CVX_BB_DEPTH || cv->cells >= CVX_BB_BUDGET) {
+    if (last) {
         cv->lb = cmin(cv->lb, lb);
         cv->incomplete = 1;
         return;
