@@ -20,21 +20,26 @@
 
 /* Unit outward normal of a face loop by Newell's method (exact for a planar loop, the least-squares
  * plane's normal otherwise). */
-static prox_vec3 newell(const prox_polytope *p, int f)
+static prox_vec3 newell_sum(const prox_polytope *p, int f)
 {
     prox_vec3 s = prox_v3(0, 0, 0);
     int m = p->fnv[f];
     for (int i = 0; i < m; ++i) {
-        prox_vec3 a = p->v[p->fv[f][i]], b = p->v[p->fv[f][(i + 1) % m]];
+        prox_vec3 a = p->v[p->fv[f][i]], b = p->v[p->fv[f][i + 1 < m ? i + 1 : 0]];
         s.x += (a.y - b.y) * (a.z + b.z);
         s.y += (a.z - b.z) * (a.x + b.x);
         s.z += (a.x - b.x) * (a.y + b.y);
     }
+    return s;
+}
+
+static prox_vec3 newell(const prox_polytope *p, int f)
+{
+    prox_vec3 s = newell_sum(p, f);
     double l = prox_v3_norm(s);
     return l > 0.0 ? prox_v3_scale(s, 1.0 / l) : s;
 }
 
-/* Face whose loop holds the directed edge a -> b, or -1. */
 /* The face of each directed edge a -> b (the first in face order when an invalid loop repeats one),
  * -1 where none: one pass over the loops instead of a search per edge. */
 static void edge_faces(const prox_polytope *p, signed char of[PROX_POLY_MAXV][PROX_POLY_MAXV])
@@ -42,53 +47,126 @@ static void edge_faces(const prox_polytope *p, signed char of[PROX_POLY_MAXV][PR
     memset(of, -1, sizeof(signed char) * PROX_POLY_MAXV * PROX_POLY_MAXV);
     for (int f = 0; f < p->nf; ++f)
         for (int i = 0; i < p->fnv[f]; ++i) {
-            int a = p->fv[f][i], b = p->fv[f][(i + 1) % p->fnv[f]];
+            int a = p->fv[f][i], b = p->fv[f][i + 1 < p->fnv[f] ? i + 1 : 0];
             if (of[a][b] < 0) of[a][b] = (signed char)f;
         }
 }
 
-/* Normals, plane offsets (mean over the face's corners), edges and size from the corners and the
- * outward face loops (the normals too unless have_normals). An ARB whose loops do not close into a surface (an edge without its reverse
- * in another face) gets ne = -1: the validator's test for an open surface. */
-static void finish(prox_polytope *p, int have_normals)
+/* Plane offsets: the mean of n_f . y over the face's corners. */
+static void offsets(prox_polytope *p)
 {
     for (int f = 0; f < p->nf; ++f) {
-        if (!have_normals) p->n[f] = newell(p, f);
         double s = 0.0;
         for (int i = 0; i < p->fnv[f]; ++i) s += prox_v3_dot(p->n[f], p->v[p->fv[f][i]]);
-        p->d[f] = s / p->fnv[f];
+        p->d[f] = p->fnv[f] == 4 ? s * 0.25 : s / p->fnv[f]; /* dividing by 4 is multiplying by 1/4 */
     }
-    signed char of[PROX_POLY_MAXV][PROX_POLY_MAXV];
-    edge_faces(p, of);
-    p->ne = 0;
-    for (int f = 0; f < p->nf; ++f)
-        for (int i = 0; i < p->fnv[f]; ++i) {
-            int a = p->fv[f][i], b = p->fv[f][(i + 1) % p->fnv[f]];
-            int g = of[b][a];
-            if (g < 0 || p->ne < 0) {
-                p->ne = -1;
-                continue;
-            }
-            if (a > b) continue;
-            if (p->ne >= PROX_POLY_MAXE) {
-                p->ne = -1;
-                continue;
-            }
-            p->e[p->ne][0] = (unsigned char)a;
-            p->e[p->ne][1] = (unsigned char)b;
-            p->ef[p->ne][0] = (unsigned char)f;
-            p->ef[p->ne][1] = (unsigned char)g;
-            p->ne++;
-        }
-    /* the diameter: the largest squared distance, one square root (the corners lie within the
-     * supported range, where no square overflows or underflows) */
-    double s2 = 0.0;
+}
+
+/* The diameter: the largest squared distance, one square root (the corners lie within the supported
+ * range, where no square overflows or underflows); *least: the smallest squared distance. */
+static void diameter(prox_polytope *p, double *least)
+{
+    double s2 = 0.0, m2 = INFINITY;
     for (int i = 0; i < p->nv; ++i)
         for (int j = i + 1; j < p->nv; ++j) {
             double d2 = prox_v3_norm2(prox_v3_sub(p->v[i], p->v[j]));
-            if (d2 > s2) s2 = d2;
+            s2 = d2 > s2 ? d2 : s2;
+            m2 = d2 < m2 ? d2 : m2;
         }
     p->size = sqrt(s2);
+    *least = m2;
+}
+
+/* The diameter of a prism over an m-gon with height vector h (corners 0..m-1 at the base, m..2m-1
+ * above them): the same largest squared distance as diameter(), found among the m^2 base-to-top
+ * pairs alone when |h|^2 exceeds 1e-8 of the base's squared bounding-box diagonal E^2. Then each
+ * pair (i, j) within a layer has a partner (i, m + j) longer by |h|^2 less 2 |(v_i - v_j) . h| and
+ * rounding: the height may tilt off the polygon's normal by the card's tolerance (1e-9, so at most
+ * 2e-9 E |h|) and the rest is rounding (about 1e-15 E |h| and 1e-15 E^2), all far below |h|^2.
+ * So the largest pair lies across, and the maximum is the very value the full search returns.
+ * Flatter prisms take the full search. */
+static void prism_diameter(prox_polytope *p, int m, prox_vec3 h)
+{
+    prox_vec3 lo = p->v[0], hi = p->v[0];
+    for (int i = 1; i < m; ++i) {
+        prox_vec3 v = p->v[i];
+        lo.x = v.x < lo.x ? v.x : lo.x, hi.x = v.x > hi.x ? v.x : hi.x;
+        lo.y = v.y < lo.y ? v.y : lo.y, hi.y = v.y > hi.y ? v.y : hi.y;
+        lo.z = v.z < lo.z ? v.z : lo.z, hi.z = v.z > hi.z ? v.z : hi.z;
+    }
+    double E2 = prox_v3_norm2(prox_v3_sub(hi, lo)), hh = prox_v3_norm2(h);
+    if (!(hh > 1e-8 * E2) || !(hh < 1e300)) {
+        double least;
+        diameter(p, &least);
+        return;
+    }
+    double s2 = 0.0;
+    for (int i = 0; i < m; ++i)
+        for (int j = m; j < 2 * m; ++j) {
+            double d2 = prox_v3_norm2(prox_v3_sub(p->v[i], p->v[j]));
+            s2 = d2 > s2 ? d2 : s2;
+        }
+    p->size = sqrt(s2);
+}
+
+/* Normals, plane offsets, edges and size from the corners and the outward face loops (the normals
+ * by Newell's method). An ARB whose loops do not close into a surface (an edge without its reverse
+ * in another face) gets ne = -1: the validator's test for an open surface. */
+static void finish(prox_polytope *p, double *least)
+{
+    for (int f = 0; f < p->nf; ++f) p->n[f] = newell(p, f);
+    offsets(p);
+    signed char of[PROX_POLY_MAXV][PROX_POLY_MAXV];
+    edge_faces(p, of);
+    int ne = 0; /* a local count: the byte stores below may alias every field of p */
+    for (int f = 0; f < p->nf; ++f) {
+        int m = p->fnv[f];
+        for (int i = 0; i < m; ++i) {
+            int a = p->fv[f][i], b = p->fv[f][i + 1 < m ? i + 1 : 0];
+            int g = of[b][a];
+            if (g < 0 || ne < 0) {
+                ne = -1;
+                continue;
+            }
+            if (a > b) continue;
+            if (ne >= PROX_POLY_MAXE) {
+                ne = -1;
+                continue;
+            }
+            p->e[ne][0] = (unsigned char)a;
+            p->e[ne][1] = (unsigned char)b;
+            p->ef[ne][0] = (unsigned char)f;
+            p->ef[ne][1] = (unsigned char)g;
+            ne++;
+        }
+    }
+    p->ne = ne;
+    diameter(p, least);
+}
+
+static void put_edge(prox_polytope *p, int a, int b, int f, int g)
+{
+    p->e[p->ne][0] = (unsigned char)a;
+    p->e[p->ne][1] = (unsigned char)b;
+    p->ef[p->ne][0] = (unsigned char)f;
+    p->ef[p->ne][1] = (unsigned char)g;
+    p->ne++;
+}
+
+/* The edges of the prism built by prism() over an m-gon (sides 0..m-1, top m, base m + 1), listed in
+ * the order finish() finds them (face by face, each edge from the face where it runs up in corner
+ * number): its topology is fixed, so no search is needed. */
+static void prism_edges(prox_polytope *p, int m)
+{
+    p->ne = 0;
+    for (int i = 0; i < m; ++i) {
+        int k = i + 1 < m ? i + 1 : 0;
+        if (i < m - 1) put_edge(p, i, k, i, m + 1); /* base edge, shared with the base */
+        put_edge(p, k, m + k, i, k);                /* vertical edge at corner k, shared with side k */
+        if (i == m - 1) put_edge(p, m, 2 * m - 1, i, m); /* top edge closing the loop */
+    }
+    for (int j = 0; j < m - 1; ++j) put_edge(p, m + j, m + j + 1, m, j);
+    put_edge(p, 0, m - 1, m + 1, m - 1);
 }
 
 /* Moves the corners (given relative to the anchor o) to their centroid; returns the centroid (absolute). */
@@ -109,21 +187,20 @@ static prox_vec3 prism(prox_polytope *p, prox_vec3 o, const prox_vec3 *q, const 
                        prox_vec3 h, int top, int base)
 {
     prox_vec3 area = prox_v3(0, 0, 0);
-    for (int i = 0; i < m; ++i) area = prox_v3_add(area, prox_v3_cross(q[i], q[(i + 1) % m]));
+    for (int i = 0; i < m; ++i) area = prox_v3_add(area, prox_v3_cross(q[i], q[i + 1 < m ? i + 1 : 0]));
     int rev = prox_v3_dot(area, h) < 0.0;
-    memset(p, 0, sizeof *p);
     p->nv = 2 * m;
     p->nf = m + 2;
     for (int i = 0; i < m; ++i) {
         int j = rev ? m - 1 - i : i;              /* polygon corner i in counter-clockwise order */
-        int s = rev ? (2 * m - 2 - i) % m : i;    /* the side from corner i to corner i + 1 */
+        int s = rev ? (2 * m - 2 - i >= m ? m - 2 - i : 2 * m - 2 - i) : i; /* side from corner i to i + 1 */
         p->v[i] = q[j];
         p->v[m + i] = prox_v3_add(q[j], h);
         p->facet[i] = side[s];
         p->n[i] = sn[s];
     }
     for (int i = 0; i < m; ++i) {
-        int k = (i + 1) % m;
+        int k = i + 1 < m ? i + 1 : 0;
         p->fnv[i] = 4;
         p->fv[i][0] = (unsigned char)i;
         p->fv[i][1] = (unsigned char)k;
@@ -139,7 +216,10 @@ static prox_vec3 prism(prox_polytope *p, prox_vec3 o, const prox_vec3 *q, const 
     p->n[m] = w;
     p->n[m + 1] = prox_v3_neg(w);
     prox_vec3 c = centre(p, o);
-    finish(p, 1);
+    for (int f = p->nf; f < PROX_POLY_MAXF; ++f) p->fnv[f] = p->facet[f] = 0; /* no stale face */
+    offsets(p);
+    prism_edges(p, m);
+    prism_diameter(p, m, h);
     return c;
 }
 
@@ -156,34 +236,34 @@ static prox_vec3 make_box(const prox_box *b, const int facet[6], prox_polytope *
     return prism(p, b->corner, q, side, sn, 4, e[2], facet[4], facet[5]);
 }
 
-/* The hexagon's corner where the side lines (n_i, d_i) and (n_j, d_j) of the cross-section meet
- * (2-D coordinates in the basis e1, e2 of the plane orthogonal to the height; Cramer's rule). */
-static void line_meet(const double ni[2], double di, const double nj[2], double dj, double out[2])
-{
-    double det = ni[0] * nj[1] - ni[1] * nj[0];
-    out[0] = (di * nj[1] - dj * ni[1]) / det;
-    out[1] = (ni[0] * dj - nj[0] * di) / det;
-}
+/* A stand-in for atan2(y, x) with the same order on (-pi, pi] and the same signed-zero ends (-2 at
+ * -pi, 2 at pi): 1 - x / (|x| + |y|) rises with the angle on each half-plane (the "pseudo-angle"),
+ * one division instead of a library call. Angles that atan2 would order differently lie within
+ * rounding of each other, and the validator rejects any such pair of sides. */
+static double pseudo_angle(double x, double y) { return copysign(1.0 - x / (fabs(x) + fabs(y)), y); }
 
-/* The six side lines of an RHP's cross-section sorted by angle: normals nl[k] (2-D), offsets dl[k]
- * and facet numbers fk[k]. Shared with the validator through prox_rhp_hexagon. */
-int prox_rhp_hexagon(const prox_rhp *h, prox_vec3 *e1, prox_vec3 *e2, double nl[6][2], double dl[6], int fk[6])
+/* The six side lines of an RHP's cross-section sorted by angle (normals nl[k] in 2-D, offsets dl[k],
+ * facet numbers fk[k]) and the corners where consecutive lines meet (Cramer's rule). */
+void prox_rhp_hexagon(const prox_rhp *h, prox_rhp_section *hx)
 {
     prox_vec3 w = prox_v3_normalize(h->axis);
-    *e1 = prox_v3_normalize(prox_v3_reject(h->r[0], w));
-    *e2 = prox_v3_cross(w, *e1);
-    double ang[6];
+    hx->e1 = prox_v3_normalize(prox_v3_reject(h->r[0], w));
+    hx->e2 = prox_v3_cross(w, hx->e1);
+    double ang[6], (*nl)[2] = hx->nl, *dl = hx->dl;
+    int *fk = hx->fk;
     for (int i = 0; i < 3; ++i) {
         prox_vec3 r = prox_v3_reject(h->r[i], w);
         double len = prox_v3_norm(r);
-        double x = prox_v3_dot(r, *e1) / len, y = prox_v3_dot(r, *e2) / len;
+        double x = prox_v3_dot(r, hx->e1) / len, y = prox_v3_dot(r, hx->e2) / len;
+        double a = pseudo_angle(x, y), q = x / (fabs(x) + fabs(y));
         for (int s = 0; s < 2; ++s) {
             int k = 2 * i + s;
             nl[k][0] = s ? -x : x;
             nl[k][1] = s ? -y : y;
             dl[k] = len;
             fk[k] = k + 1;
-            ang[k] = atan2(nl[k][1], nl[k][0]);
+            /* pseudo_angle(-x, -y), exactly: (-x) / D = -(x / D) and 1 - (-q) = 1 + q */
+            ang[k] = s ? copysign(1.0 + q, -y) : a;
         }
     }
     for (int i = 1; i < 6; ++i) /* insertion sort by angle */
@@ -193,27 +273,35 @@ int prox_rhp_hexagon(const prox_rhp *h, prox_vec3 *e1, prox_vec3 *e2, double nl[
             ang[j] = ang[j - 1], nl[j][0] = nl[j - 1][0], nl[j][1] = nl[j - 1][1], dl[j] = dl[j - 1], fk[j] = fk[j - 1];
             ang[j - 1] = t, nl[j - 1][0] = tx, nl[j - 1][1] = ty, dl[j - 1] = td, fk[j - 1] = tk;
         }
-    return 6;
+    for (int k = 0; k < 6; ++k) {
+        int j = (k + 1) % 6;
+        double det = nl[k][0] * nl[j][1] - nl[k][1] * nl[j][0];
+        hx->det[k] = det;
+        hx->x[k][0] = (dl[k] * nl[j][1] - dl[j] * nl[k][1]) / det;
+        hx->x[k][1] = (nl[k][0] * dl[j] - nl[j][0] * dl[k]) / det;
+    }
+}
+
+prox_vec3 prox_polytope_rhp(const prox_rhp *h, const prox_rhp_section *hx, prox_polytope *p)
+{
+    int side[6];
+    prox_vec3 q[6], sn[6], u[3];
+    for (int i = 0; i < 3; ++i) u[i] = prox_v3_normalize(h->r[i]);
+    for (int k = 0; k < 6; ++k) {
+        int j = (k + 1) % 6;
+        q[k] = prox_v3_add(prox_v3_scale(hx->e1, hx->x[k][0]), prox_v3_scale(hx->e2, hx->x[k][1]));
+        side[k] = hx->fk[j];              /* side from corner k to corner k + 1 */
+        int i = (hx->fk[j] - 1) / 2;      /* the card's r[i], signed: facet 2i+1 is +r[i] */
+        sn[k] = (hx->fk[j] & 1) ? u[i] : prox_v3_neg(u[i]);
+    }
+    return prism(p, h->base, q, side, sn, 6, h->axis, 7, 8);
 }
 
 static prox_vec3 make_rhp(const prox_rhp *h, prox_polytope *p)
 {
-    prox_vec3 e1, e2;
-    double nl[6][2], dl[6];
-    int fk[6], side[6];
-    prox_rhp_hexagon(h, &e1, &e2, nl, dl, fk);
-    prox_vec3 q[6], sn[6];
-    for (int k = 0; k < 6; ++k) {
-        int j = (k + 1) % 6;
-        double x[2];
-        line_meet(nl[k], dl[k], nl[j], dl[j], x); /* corner k joins side lines k and k + 1 */
-        q[k] = prox_v3_add(prox_v3_scale(e1, x[0]), prox_v3_scale(e2, x[1]));
-        side[k] = fk[j];                            /* side from corner k to corner k + 1 */
-        int i = (fk[j] - 1) / 2;                    /* the card's r[i], signed: facet 2i+1 is +r[i] */
-        prox_vec3 u = prox_v3_normalize(h->r[i]);
-        sn[k] = (fk[j] & 1) ? u : prox_v3_neg(u);
-    }
-    return prism(p, h->base, q, side, sn, 6, h->axis, 7, 8);
+    prox_rhp_section hx;
+    prox_rhp_hexagon(h, &hx);
+    return prox_polytope_rhp(h, &hx, p);
 }
 
 static prox_vec3 make_wed(const prox_wed *w, prox_polytope *p)
@@ -233,32 +321,55 @@ static prox_vec3 make_wed(const prox_wed *w, prox_polytope *p)
 /* Corner digits of ARB face entry x (four digits; 0 for the missing fourth of a triangle). */
 static void arb_digits(int x, int dig[4])
 {
-    for (int i = 3; i >= 0; --i) {
-        dig[i] = x % 10;
-        x /= 10;
-    }
+    dig[0] = x / 1000 % 10; /* four independent quotients rather than a chain of them */
+    dig[1] = x / 100 % 10;
+    dig[2] = x / 10 % 10;
+    dig[3] = x % 10;
 }
 
-static prox_vec3 make_arb(const prox_arb *a, prox_polytope *p)
+/* The sign of n . w for face k's unit Newell normal n: read off the raw Newell sum s when s . w
+ * stands clear of its rounding (above 1e-10 of sum |s_i w_i|, where scaling s by 1 / |s| cannot
+ * change the sign), else from the unit normal itself. */
+static int faces_inwards(const prox_polytope *p, int k, prox_vec3 w)
 {
-    memset(p, 0, sizeof *p);
-    int map[9], used[9] = {0};
+    prox_vec3 s = newell_sum(p, k);
+    double D = prox_v3_dot(s, w), M = fabs(s.x * w.x) + fabs(s.y * w.y) + fabs(s.z * w.z);
+    if (M > 1e-280 && fabs(D) > 1e-10 * M) return D < 0.0;
+    return prox_v3_dot(newell(p, k), w) < 0.0;
+}
+
+/* Face k's loop as listed turns inwards: by its first three corners when quick (the validator's
+ * fast path confirms the outcome, arb_plainly_ok), else by its Newell normal. */
+static int loop_inwards(const prox_polytope *p, int k, prox_vec3 g, int quick)
+{
+    prox_vec3 a = p->v[p->fv[k][0]], w = prox_v3_sub(a, g);
+    if (!quick) return faces_inwards(p, k, w);
+    prox_vec3 t = prox_v3_cross(prox_v3_sub(p->v[p->fv[k][1]], a), prox_v3_sub(p->v[p->fv[k][2]], a));
+    return prox_v3_dot(t, w) < 0.0;
+}
+
+prox_vec3 prox_polytope_arb(const prox_arb *a, prox_polytope *p, double *least, int quick)
+{
+    p->nv = p->nf = p->ne = 0; /* the counts and the small per-face tables; finish() fills the rest */
+    memset(p->fnv, 0, sizeof p->fnv);
+    memset(p->facet, 0, sizeof p->facet);
+    int map[9], dig[6][4];
+    unsigned used = 0; /* bit c: corner c named by some face */
     for (int f = 0; f < 6; ++f) {
-        int dig[4];
         if (a->face[f] <= 0) continue;
-        arb_digits(a->face[f], dig);
+        arb_digits(a->face[f], dig[f]);
         for (int i = 0; i < 4; ++i)
-            if (dig[i] >= 1 && dig[i] <= 8) used[dig[i]] = 1;
+            if (dig[f][i] >= 1 && dig[f][i] <= 8) used |= 1u << dig[f][i];
     }
     prox_vec3 o = prox_v3(0, 0, 0);
     for (int c = 1; c <= 8; ++c)
-        if (used[c]) {
+        if ((used >> c) & 1u) {
             o = a->corner[c - 1];
             break;
         }
     for (int c = 1; c <= 8; ++c) {
         map[c] = -1;
-        if (!used[c]) continue;
+        if (!((used >> c) & 1u)) continue;
         map[c] = p->nv;
         p->v[p->nv++] = prox_v3_sub(a->corner[c - 1], o);
     }
@@ -266,19 +377,17 @@ static prox_vec3 make_arb(const prox_arb *a, prox_polytope *p)
     for (int i = 0; i < p->nv; ++i) g = prox_v3_add(g, p->v[i]);
     if (p->nv) g = prox_v3_scale(g, 1.0 / p->nv);
     for (int f = 0; f < 6; ++f) {
-        int dig[4], m = 0;
+        int m = 0;
         if (a->face[f] <= 0) continue;
-        arb_digits(a->face[f], dig);
         int k = p->nf;
         for (int i = 0; i < 4; ++i)
-            if (dig[i] >= 1 && dig[i] <= 8) p->fv[k][m++] = (unsigned char)map[dig[i]];
+            if (dig[f][i] >= 1 && dig[f][i] <= 8) p->fv[k][m++] = (unsigned char)map[dig[f][i]];
         p->fnv[k] = m;
         p->facet[k] = f + 1;
         p->nf++;
         if (m < 3) continue;
         /* Loops may be listed either way round: turn each to face outwards (away from the centroid). */
-        prox_vec3 n = newell(p, k);
-        if (prox_v3_dot(n, prox_v3_sub(p->v[p->fv[k][0]], g)) < 0.0)
+        if (loop_inwards(p, k, g, quick))
             for (int i = 0; i < m / 2; ++i) {
                 unsigned char t = p->fv[k][i];
                 p->fv[k][i] = p->fv[k][m - 1 - i];
@@ -286,7 +395,7 @@ static prox_vec3 make_arb(const prox_arb *a, prox_polytope *p)
             }
     }
     prox_vec3 c = p->nv ? centre(p, o) : o;
-    finish(p, 0);
+    finish(p, least);
     return c;
 }
 
@@ -301,7 +410,10 @@ prox_vec3 prox_polytope_make(const prox_shape *s, prox_polytope *p)
     }
     case PROX_SHAPE_RHP: return make_rhp(&s->u.rhp, p);
     case PROX_SHAPE_WED: return make_wed(&s->u.wed, p);
-    case PROX_SHAPE_ARB: return make_arb(&s->u.arb, p);
+    case PROX_SHAPE_ARB: {
+        double least;
+        return prox_polytope_arb(&s->u.arb, p, &least, 0);
+    }
     default: break;
     }
     memset(p, 0, sizeof *p);
@@ -353,7 +465,7 @@ static prox_vec3 face_closest(const prox_polytope *p, int f, prox_vec3 y)
     prox_vec3 foot = prox_v3_mad(y, p->d[f] - prox_v3_dot(n, y), n);
     int m = p->fnv[f], inside = 1;
     for (int i = 0; i < m && inside; ++i) {
-        prox_vec3 a = p->v[p->fv[f][i]], b = p->v[p->fv[f][(i + 1) % m]];
+        prox_vec3 a = p->v[p->fv[f][i]], b = p->v[p->fv[f][i + 1 < m ? i + 1 : 0]];
         prox_vec3 out = prox_v3_cross(prox_v3_sub(b, a), n); /* outward in the face plane */
         if (prox_v3_dot(out, prox_v3_sub(foot, a)) > 0.0) inside = 0;
     }
@@ -361,7 +473,7 @@ static prox_vec3 face_closest(const prox_polytope *p, int f, prox_vec3 y)
     prox_vec3 best = p->v[p->fv[f][0]];
     double bd = INFINITY;
     for (int i = 0; i < m; ++i) {
-        prox_vec3 c = seg_closest(p->v[p->fv[f][i]], p->v[p->fv[f][(i + 1) % m]], y);
+        prox_vec3 c = seg_closest(p->v[p->fv[f][i]], p->v[p->fv[f][i + 1 < m ? i + 1 : 0]], y);
         double dd = prox_v3_norm2(prox_v3_sub(c, y));
         if (dd < bd) bd = dd, best = c;
     }

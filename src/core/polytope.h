@@ -36,6 +36,13 @@ prox_vec3 prox_polytope_make(const prox_shape *s, prox_polytope *p);
  * polytope (*p, reference point *c) built once for both. */
 prox_status prox_polytope_checked(const prox_shape *s, prox_polytope *p, prox_vec3 *c);
 
+/* The two halves of prox_polytope_checked. prox_polytope_fast: 1 when cheap sufficient tests prove
+ * an RHP, WED or ARB valid (and *p, *c built: the very polytope of the full checks), else 0 (no
+ * verdict; *p undefined). prox_polytope_checked_full: the ordered checks that name each fault. The
+ * first never accepts what the second rejects (tests/test_poly_fastpath.c). */
+int prox_polytope_fast(const prox_shape *s, prox_polytope *p, prox_vec3 *c);
+prox_status prox_polytope_checked_full(const prox_shape *s, prox_polytope *p, prox_vec3 *c);
+
 /* Centred support function hc(d) = max_i d.v_i and a support point (a corner; a zero component
  * along a face or an edge picks one of its corners). */
 double prox_polytope_hc(const prox_polytope *p, prox_vec3 d);
@@ -48,9 +55,27 @@ int prox_polytope_contains(const prox_polytope *p, prox_vec3 y, double tol);
 prox_vec3 prox_polytope_closest(const prox_polytope *p, prox_vec3 y);
 
 /* The hexagon of an RHP in its base plane: in-plane axes e1, e2, the six side normals nl[k] and
- * offsets dl[k] in those axes, and their MCNP facet numbers fk[k]; returns 0 when the six side
- * planes bound a convex hexagon (shared by the builder and the validator). */
-int prox_rhp_hexagon(const prox_rhp *h, prox_vec3 *e1, prox_vec3 *e2, double nl[6][2], double dl[6], int fk[6]);
+ * offsets dl[k] in those axes sorted by angle, their MCNP facet numbers fk[k], and corner k where
+ * side lines k and k + 1 meet (x[k], by Cramer's rule with determinant det[k]). Computed once and
+ * shared by the validator (which checks that the lines bound a convex hexagon) and the builder. */
+typedef struct prox_rhp_section {
+    prox_vec3 e1, e2;
+    double nl[6][2], dl[6];
+    int fk[6];
+    double x[6][2], det[6];
+} prox_rhp_section;
+
+void prox_rhp_hexagon(const prox_rhp *h, prox_rhp_section *hx);
+
+/* The polytope of an RHP from its section (prox_rhp_hexagon); returns its reference point. */
+prox_vec3 prox_polytope_rhp(const prox_rhp *h, const prox_rhp_section *hx, prox_polytope *p);
+
+/* The polytope of an ARB (valid card entries; the solid itself is checked by the validator) and
+ * *least, the smallest squared distance between two of its corners; returns its reference point.
+ * Each face loop is turned outwards by its Newell normal; quick = 1 decides by the loop's first
+ * three corners instead, which only the validator's fast path may use (it confirms every face's
+ * outcome; prox_polytope_make builds with quick = 0). */
+prox_vec3 prox_polytope_arb(const prox_arb *a, prox_polytope *p, double *least, int quick);
 
 /* Signed distance from y to the boundary (< 0 inside) and the closest boundary point *q. */
 double prox_polytope_boundary(const prox_polytope *p, prox_vec3 y, prox_vec3 *q);

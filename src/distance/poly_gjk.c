@@ -32,9 +32,11 @@ static int argmax(const prox_vec3 *v, int n, prox_vec3 d)
 {
     int best = 0;
     double m = prox_v3_dot(d, v[0]);
-    for (int i = 1; i < n; ++i) {
+    for (int i = 1; i < n; ++i) { /* selects, not branches: the winner is unpredictable */
         double t = prox_v3_dot(d, v[i]);
-        if (t > m) m = t, best = i;
+        int gt = t > m;
+        best = gt ? i : best;
+        m = gt ? t : m;
     }
     return best;
 }

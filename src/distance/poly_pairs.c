@@ -24,6 +24,8 @@
  * of B - A, and their separation is read off the two edges' corners. */
 #include <math.h>
 #include <stddef.h>
+#include <stdint.h>
+#include <string.h>
 
 #include "core/tol.h"
 #include "distance/poly_internal.h"
@@ -206,7 +208,7 @@ static int in_face(const placed *P, int f, prox_vec3 x)
     const prox_polytope *p = P->p;
     int m = p->fnv[f];
     for (int i = 0; i < m; ++i) {
-        prox_vec3 a = P->v[p->fv[f][i]], b = P->v[p->fv[f][(i + 1) % m]];
+        prox_vec3 a = P->v[p->fv[f][i]], b = P->v[p->fv[f][i + 1 < m ? i + 1 : 0]];
         if (prox_v3_dot(prox_v3_cross(prox_v3_sub(b, a), p->n[f]), prox_v3_sub(x, a)) > 0.0) return 0;
     }
     return 1;
@@ -373,7 +375,7 @@ static double cross2(v2 a, v2 b, v2 c) { return (b.x - a.x) * (c.y - a.y) - (b.y
 static int clip2(v2 *q, int k, const v2 *P, int m, double orient, double tol)
 {
     for (int e = 0; e < m && k > 0; ++e) {
-        v2 a = P[e], b = P[(e + 1) % m], out[2 * PROX_POLY_MAXFV + 4];
+        v2 a = P[e], b = P[e + 1 < m ? e + 1 : 0], out[2 * PROX_POLY_MAXFV + 4];
         double len = hypot(b.x - a.x, b.y - a.y);
         int o = 0;
         for (int i = 0; i < k; ++i) {
@@ -427,7 +429,10 @@ static prox_vec3 lift(const placed *P, const feature *F, v2 w, prox_vec3 e1, pro
 static double area2(const v2 *q, int m)
 {
     double s = 0.0;
-    for (int i = 0; i < m; ++i) s += q[i].x * q[(i + 1) % m].y - q[(i + 1) % m].x * q[i].y;
+    for (int i = 0; i < m; ++i) {
+        int j = i + 1 < m ? i + 1 : 0;
+        s += q[i].x * q[j].y - q[j].x * q[i].y;
+    }
     return s;
 }
 
@@ -836,7 +841,23 @@ static void depth_witness(const placed *A, const placed *B, const axes *X, doubl
 
 static double pair_scale(const prox_polytope *a, const prox_polytope *b, prox_vec3 D)
 {
-    return fmax(prox_v3_norm(D), fmax(a->size, b->size));
+    double s = prox_v3_norm(D); /* finite values: comparisons, not fmax calls */
+    s = a->size > s ? a->size : s;
+    return b->size > s ? b->size : s;
+}
+
+/* 2^-ilogb(S) read off S's exponent bits for a normal S (ldexp and ilogb are library calls); the
+ * library otherwise. */
+static double unit_scale(double S)
+{
+    uint64_t bits;
+    memcpy(&bits, &S, sizeof bits);
+    int e = (int)((bits >> 52) & 0x7ff); /* biased exponent: S in [2^(e-1023), 2^(e-1022)) */
+    if (e < 1 || e > 2045) return ldexp(1.0, -ilogb(S));
+    bits = (uint64_t)(2046 - e) << 52;  /* 2^(1023-e) */
+    double u;
+    memcpy(&u, &bits, sizeof u);
+    return u;
 }
 
 /* The pair placed in A's frame at unit scale: *u the power of two applied (S u in [1, 2)), *S1 = S u. */
@@ -844,7 +865,7 @@ static void place_pair(const prox_polytope *a, const prox_polytope *b, prox_vec3
                        double *S1)
 {
     double S = pair_scale(a, b, D);
-    *u = ldexp(1.0, -ilogb(S));
+    *u = unit_scale(S);
     *S1 = S * *u;
     place(A, a, prox_v3(0, 0, 0), *u);
     place(B, b, D, *u);
