@@ -1,7 +1,7 @@
 /* Signed distance of two solid cylinders, composed from the two modules: the exact distance of the
  * fast method (prox_rcc_distance, certified by duality) when the solids are disjoint, the penetration
  * depth of the support method (min over unit D of h_A(D) + h_B(-D), Eberly's Eq. (4) support
- * functions: prox_sat_rcc_depth) when they overlap. */
+ * functions: prox_sat_rcc_depth_bounded) when they overlap. */
 #include "prox/distance.h"
 #include "prox/sat.h"
 #include "core/body.h"
@@ -32,19 +32,21 @@ static void polish_disjoint(const prox_rcc *a, const prox_rcc *b, double d, prox
     *p2 = prox_v3_add(y, o);
 }
 
-static prox_signed_result rcc_signed(const prox_rcc *a, const prox_rcc *b);
+static prox_signed_result rcc_signed(const prox_rcc *a, const prox_rcc *b, int *bounded);
 
-/* The answer with its proved enclosure (core/signed_bounds.c). */
+/* The answer with its proved enclosure (core/signed_bounds.c; an overlapping answer's comes with its
+ * depth, computed on the bodies the depth already built). */
 PROX_API prox_signed_result prox_rcc_signed_distance(const prox_rcc *a, const prox_rcc *b)
 {
-    prox_signed_result r = rcc_signed(a, b);
-    if (r.status != PROX_OK) return r;
+    int bounded = 0;
+    prox_signed_result r = rcc_signed(a, b, &bounded);
+    if (r.status != PROX_OK || bounded) return r;
     prox_shape sa = prox_shape_from_rcc(*a), sb = prox_shape_from_rcc(*b);
     prox_shape_signed_bounds(&sa, &sb, &r);
     return r;
 }
 
-static prox_signed_result rcc_signed(const prox_rcc *a, const prox_rcc *b)
+static prox_signed_result rcc_signed(const prox_rcc *a, const prox_rcc *b, int *bounded)
 {
     prox_signed_result r = {0};
     prox_distance_result d = prox_rcc_distance(a, b); /* validates both */
@@ -52,7 +54,7 @@ static prox_signed_result rcc_signed(const prox_rcc *a, const prox_rcc *b)
         r.status = d.status;
         return r;
     }
-    if (d.intersect || !(d.distance > 0.0)) return prox_sat_rcc_depth(a, b);
+    if (d.intersect || !(d.distance > 0.0)) return prox_sat_rcc_depth_bounded(a, b, bounded);
     r.status = PROX_OK;
     r.sd = d.distance;
     r.p1 = d.p1;

@@ -18,9 +18,11 @@
  *            stationary points of the far-point distance (dp_cells_far).
  * Cells are excluded by lower bounds of the circle-circle distance (centres, planes, spheres), then
  * by a certified scan of the rim's angle (dp_cell_may: the normal-cone, value and stationarity
- * conditions of a cell minimiser, each bounded over an interval by its Lipschitz constant); only a
- * cell that could beat the best value found so far is solved (degree 8). A cell or case that cannot
- * be settled returns 0 and the caller runs the global search of sup_engine.c. */
+ * conditions of a cell minimiser, each bounded over an interval by its Lipschitz constant, some
+ * also by a bound of their second derivative); only a cell that could beat the best value found so
+ * far is solved (degree 8). A cell or case that cannot be settled returns 0 and the caller runs the
+ * global search of sup_engine.c. */
+#include "sat_internal.h"
 #include "sup_engine.h"
 
 #include "core/circle.h"
@@ -119,26 +121,28 @@ static int dp_reach(const prox_fcircle *c, const prox_body *k, int e, double cut
     return !(lo > fmax(r, cut - r) + tol || hi < r - cut - tol);
 }
 
-/* Ridge D.w = 0 of cylinder `lat` (its lateral line) against the rims of `rim`: every stationary
- * point q of dist^2(rim, axis of lat) gives D = +-(q - c_lat) projected off w. 0 when degenerate. */
-static int dp_ridge(dp_state *s, const prox_body *lat, const prox_body *rim, double tol)
+/* Ridge D.w = 0 of cylinder `lat` (its lateral line) against the rims rr[0] (bottom), rr[1] (top) of
+ * `rim`: every stationary point q of dist^2(rim, axis of lat) gives D = +-(q - c_lat) projected off
+ * w. 0 when degenerate. */
+static int dp_ridge(dp_state *s, const prox_body *lat, const prox_body *rim, const prox_fcircle rr[2], double tol)
 {
     prox_vec3 w = lat->cyl.w;
     int need[2];
     for (int e = -1; e <= 1; e += 2) {
-        prox_fcircle c = dp_rim(rim, e);
+        prox_fcircle c = rr[(e + 1) / 2];
         need[(e + 1) / 2] = !(dp_ridge_lb(&c, lat) > s->best + tol || !dp_reach(&c, lat, 0, s->best, tol));
     }
     if (!need[0] && !need[1]) return 1;
-    /* the whole ridge in its plane (rcc_ridge_shadow.c); the rims' quartics when it is degenerate */
+    /* the whole ridge in its plane (rcc_ridge_shadow.c: its minimiser is among the candidates); the
+     * rims' quartics when it is degenerate */
     prox_vec3 cand[24];
-    int nc = sup_ridge_shadow(lat, rim, s->delta, cand, 24);
+    int nc = sup_ridge_shadow_min(lat, rim, s->delta, cand, 24);
     if (nc >= 0) {
         for (int i = 0; i < nc; ++i) dp_consider_pm(s, prox_v3_reject(cand[i], w));
         return 1;
     }
     for (int e = -1; e <= 1; e += 2) {
-        prox_fcircle c = dp_rim(rim, e);
+        prox_fcircle c = rr[(e + 1) / 2];
         if (!need[(e + 1) / 2]) continue;
         double th[4];
         int cnt = 0;
@@ -244,32 +248,61 @@ static int dp_cells_far(dp_state *s, const prox_fcircle *a, const prox_fcircle *
 }
 
 /* One cell's parametrised rim x(theta) (circle P of body kp at end ep) against rim Q of body kq at
- * end eq, for the certified exclusion below. */
+ * end eq, for the certified exclusion below, with the per-cell coefficients of its conditions as
+ * trigonometric polynomials of theta (dp_cell_prep): x - c_Q = d0 + r_P (c u + s v), its offset
+ * from Q's axis rad(theta) = R0 + c Ru + s Rv, and the dot products the conditions take of it. */
 typedef struct dp_cell {
     const prox_fcircle *p, *q;
-    prox_vec3 wq, ezq, ezp; /* Q's axis; the outward normals eq wq, ep wp of the two end planes */
     double cut, tol;
     double lq; /* bound of |q - c_P| + r_P: the turn rate of f[4] from its direction u_P */
+    double a1; /* amplitude r_P |wq x n_P| of f[1], a trigonometric polynomial of degree 1 */
     int budget; /* evaluations left before the scan gives up (the cell is then solved) */
     int far;    /* q is the farthest point of rim Q from x (dp_cells_far), not the closest */
+    prox_vec3 r0, ru, rv;           /* rad = r0 + c ru + s rv */
+    double z0, zu, zv;              /* f[1] = ezq.(x - c_Q) = z0 + c zu + s zv */
+    double e0, e0r, eur, evr;       /* ezp.(c_Q - c_P), and ezp.rad = e0r + c eur + s evr */
+    double gu, gv, ru0, rv0;        /* (c_P - c_Q).u, .v; R0.u, R0.v */
+    double puu, puv, pvv, quv, qd, qvu; /* rad.u_P(x) - c ru0 - s rv0 = c^2 puu + cs puv + s^2 pvv;
+                                         * rad.t_P(x) - c rv0 + s ru0 = c^2 quv + cs qd - s^2 qvu */
 } dp_cell;
 
 enum { DP_NCOND = 7, DP_NVAL = 9 }; /* the conditions, then cos and sin of the angle */
+
+/* The coefficients of dp_cell from the two circles and Q's axis wq, the end normals ezq = eq wq and
+ * ezp = ep wp. */
+static void dp_cell_prep(dp_cell *g, prox_vec3 wq, prox_vec3 ezq, prox_vec3 ezp)
+{
+    const prox_fcircle *p = g->p, *q = g->q;
+    prox_vec3 d0 = prox_v3_sub(p->c, q->c);
+    g->r0 = prox_v3_reject(d0, wq);
+    g->ru = prox_v3_scale(prox_v3_reject(p->u, wq), p->r);
+    g->rv = prox_v3_scale(prox_v3_reject(p->v, wq), p->r);
+    g->z0 = prox_v3_dot(d0, ezq), g->zu = p->r * prox_v3_dot(p->u, ezq), g->zv = p->r * prox_v3_dot(p->v, ezq);
+    g->e0 = -prox_v3_dot(d0, ezp), g->e0r = prox_v3_dot(g->r0, ezp);
+    g->eur = prox_v3_dot(g->ru, ezp), g->evr = prox_v3_dot(g->rv, ezp);
+    g->gu = prox_v3_dot(d0, p->u), g->gv = prox_v3_dot(d0, p->v);
+    g->ru0 = prox_v3_dot(g->r0, p->u), g->rv0 = prox_v3_dot(g->r0, p->v);
+    g->puu = prox_v3_dot(g->ru, p->u), g->pvv = prox_v3_dot(g->rv, p->v);
+    g->puv = prox_v3_dot(g->ru, p->v) + prox_v3_dot(g->rv, p->u);
+    g->quv = prox_v3_dot(g->ru, p->v), g->qvu = prox_v3_dot(g->rv, p->u);
+    g->qd = prox_v3_dot(g->rv, p->v) - prox_v3_dot(g->ru, p->u);
+}
 
 /* The conditions at x = x(theta), each <= 0 at a cell minimiser (dp_cell_may), q the closest point
  * of rim Q to x: f[0] = rho_Q(x) - r_Q, f[1] = ezq.(x - c_Q), f[2] = |x - q| - cut (1-Lipschitz in
  * x); f[3] = ezp.(q - c_P), f[4] = (q - x).u_P(x) (through q; -inf when x is on Q's axis); f[5] the
  * stationarity (q - x).t_P(x); f[6] = rho_Q(x). With far, q is the farthest point of Q: f[0] (no
  * radial condition there) is -rho_Q - r_Q <= 0, and |x - q| = sqrt((rho + r_Q)^2 + z^2), again
- * 1-Lipschitz in x (the largest distance to a set). */
+ * 1-Lipschitz in x (the largest distance to a set). With q = c_Q + k rad (k = +-r_Q / rho) and
+ * x = c_P + r_P u_P(x): q - x = -(c_P - c_Q) - r_P u_P + k rad, u_P.t_P = 0, so
+ * f[3] = ezp.(c_Q - c_P) + k ezp.rad, f[4] = -(c gu + s gv) - r_P + k rad.u_P,
+ * f[5] = -(c gv - s gu) + k rad.t_P, each from the coefficients of dp_cell_prep. */
 static void dp_cell_vals(dp_cell *g, double c, double s, double f[DP_NVAL])
 {
     --g->budget;
     f[7] = c, f[8] = s;
-    prox_vec3 ru = prox_v3_add(prox_v3_scale(g->p->u, c), prox_v3_scale(g->p->v, s)); /* u_P(x) */
-    prox_vec3 x = prox_v3_add(g->p->c, prox_v3_scale(ru, g->p->r)), d = prox_v3_sub(x, g->q->c);
-    double z = prox_v3_dot(d, g->ezq);
-    prox_vec3 rad = prox_v3_reject(d, g->wq);
+    prox_vec3 rad = prox_v3_add(g->r0, prox_v3_add(prox_v3_scale(g->ru, c), prox_v3_scale(g->rv, s)));
+    double z = g->z0 + c * g->zu + s * g->zv;
     double rho = prox_v3_norm(rad);
     double dr = g->far ? rho + g->q->r : rho - g->q->r;
     f[0] = g->far ? -dr : dr;
@@ -281,26 +314,40 @@ static void dp_cell_vals(dp_cell *g, double c, double s, double f[DP_NVAL])
         f[5] = 0.0;
         return;
     }
-    prox_vec3 q = prox_v3_add(g->q->c, prox_v3_scale(rad, (g->far ? -g->q->r : g->q->r) / rho));
-    f[3] = prox_v3_dot(prox_v3_sub(q, g->p->c), g->ezp);
-    f[4] = prox_v3_dot(prox_v3_sub(q, x), ru);
-    f[5] = prox_v3_dot(prox_v3_sub(q, x), prox_v3_sub(prox_v3_scale(g->p->v, c), prox_v3_scale(g->p->u, s)));
+    double k = (g->far ? -g->q->r : g->q->r) / rho, cc = c * c, cs = c * s, ss = s * s;
+    f[3] = g->e0 + k * (g->e0r + c * g->eur + s * g->evr);
+    f[4] = k * (c * g->ru0 + s * g->rv0 + cc * g->puu + cs * g->puv + ss * g->pvv) - (c * g->gu + s * g->gv) - g->p->r;
+    f[5] = k * (c * g->rv0 - s * g->ru0 + cc * g->quv + cs * g->qd - ss * g->qvu) - (c * g->gv - s * g->gu);
 }
 
 /* 0 when no angle of [t0, t1] satisfies all the conditions: an f with |df/dtheta| <= L is >= (f(t0)
  * + f(t1) - L (t1 - t0)) / 2 on the interval. x moves at speed r_P, so L = r_P for f[0..2]; q moves at
  * most r_Q / rho_Q times as fast as x (rho_Q >= rho_lo on the interval, from f[0]), so L = r_P r_Q /
- * rho_lo for f[3], plus the turn of u_P times |q - x| <= |q - c_P| + r_P for f[4]. Undecided
+ * rho_lo for f[3], plus the turn of u_P times |q - x| <= |q - c_P| + r_P for f[4]. An f with
+ * |d2f/dtheta2| <= M stays within M w^2 / 8 of its chord, so it is >= min(f(t0), f(t1)) - M w^2 / 8 on
+ * an interval of width w: tighter on short intervals, used for f[1], rho_Q and f[3]. Undecided
  * intervals are halved `depth` more times while the evaluation budget lasts (undecided: 1). */
 static int dp_cell_span(dp_cell *g, double t0, const double *f0, double t1, const double *f1, int depth)
 {
-    double w = t1 - t0 + 64.0 * DBL_EPSILON, L = g->p->r * w;
+    double w = t1 - t0 + 64.0 * DBL_EPSILON, L = g->p->r * w, sag = 0.125 * w * w;
     for (int k = 0; k < 3; ++k)
         if (0.5 * (f0[k] + f1[k] - L) > g->tol) return 0;
+    /* f[1] is a sinusoid of amplitude a1: within a1 (1 - cos(w / 2)) <= a1 w^2 / 8 of its chord, a
+     * bound tighter than the slope's on short intervals */
+    if ((f0[1] < f1[1] ? f0[1] : f1[1]) - g->a1 * sag > g->tol) return 0;
     double rho_lo = g->far ? 0.5 * (f0[6] + f1[6] - L) : 0.5 * (f0[0] + f1[0] - L) + g->q->r;
     if (rho_lo > 0.0) {
-        double Lq = L * g->q->r / rho_lo;
+        /* rho_Q = |y|, y(theta) the offset from Q's axis with |y'|, |y''| <= r_P: |rho''| <= r_P +
+         * r_P^2 / rho, so rho is within (r_P + r_P^2 / rho_lo) w^2 / 8 of its chord too */
+        double rho2 = (f0[6] < f1[6] ? f0[6] : f1[6]) - (g->p->r + g->p->r * g->p->r / rho_lo) * sag;
+        if (rho2 > rho_lo) rho_lo = rho2;
+        if (!g->far && rho_lo - g->q->r > g->tol) return 0;
+        double irho = 1.0 / rho_lo, Lq = L * g->q->r * irho;
         if (0.5 * (f0[3] + f1[3] - Lq) > g->tol) return 0;
+        /* q = c_Q + r_Q y / |y|: |(y / |y|)''| <= |y''| / rho + 3 |y'|^2 / rho^2, so f[3] = ezp.(q - c_P)
+         * is within r_Q r_P / rho_lo (1 + 3 r_P / rho_lo) w^2 / 8 of its chord */
+        if ((f0[3] < f1[3] ? f0[3] : f1[3]) - g->q->r * g->p->r * irho * (1.0 + 3.0 * g->p->r * irho) * sag > g->tol)
+            return 0;
         if (0.5 * (f0[4] + f1[4] - Lq - g->lq * w) > g->tol) return 0;
         /* stationarity f[5] = 0: excluded when f[5] keeps one sign with |f[5]| above its drift */
         double dhi = 0.5 * (f0[2] + f1[2] + L) + g->cut;
@@ -333,20 +380,25 @@ static int dp_cell_may(const prox_fcircle *p, const prox_body *kp, int ep, const
     enum { N = 8, DEPTH = 12, BUDGET = 256 };
     dp_cell g = {.p = p,
                  .q = q,
-                 .wq = kq->cyl.w,
-                 .ezq = prox_v3_scale(kq->cyl.w, (double)eq),
-                 .ezp = prox_v3_scale(kp->cyl.w, (double)ep),
                  .cut = cut,
                  .tol = tol,
                  .lq = prox_v3_dist(q->c, p->c) + q->r + p->r,
+                 .a1 = p->r * prox_v3_norm(prox_v3_cross(kq->cyl.w, p->n)),
                  .budget = BUDGET,
                  .far = far};
+    dp_cell_prep(&g, kq->cyl.w, prox_v3_scale(kq->cyl.w, (double)eq), prox_v3_scale(kp->cyl.w, (double)ep));
+    /* cos and sin of the grid's angles k pi / 4 (no trigonometric call; within an ulp of the angle,
+     * which the 64 eps added to every width covers) */
+#define DP_H 0.70710678118654752440 /* sqrt(1/2) */
+    static const double gc[N] = {1.0, DP_H, 0.0, -DP_H, -1.0, -DP_H, 0.0, DP_H};
+    static const double gs[N] = {0.0, DP_H, 1.0, DP_H, 0.0, -DP_H, -1.0, -DP_H};
+#undef DP_H
     double f0[DP_NVAL], fa[DP_NVAL], fb[DP_NVAL];
     dp_cell_vals(&g, 1.0, 0.0, f0);
     memcpy(fa, f0, sizeof fa);
     for (int k = 1; k <= N; ++k) {
         double t0 = 2.0 * PROX_PI * (k - 1) / N, t1 = 2.0 * PROX_PI * k / N;
-        if (k < N) dp_cell_vals(&g, cos(t1), sin(t1), fb);
+        if (k < N) dp_cell_vals(&g, gc[k], gs[k], fb);
         else memcpy(fb, f0, sizeof fb);
         if (dp_cell_span(&g, t0, fa, t1, fb, DEPTH)) return 1;
         memcpy(fa, fb, sizeof fa);
@@ -365,15 +417,16 @@ int sup_rcc_depth_enum(const prox_body *a, const prox_body *b, prox_signed_resul
     dp_consider_pm(&s, b->cyl.w);
     dp_consider_pm(&s, prox_v3_cross(a->cyl.w, b->cyl.w));
     /* ridges */
-    ok = dp_ridge(&s, a, b, PROX_TOL_SEARCH * scale) && ok;
-    ok = dp_ridge(&s, b, a, PROX_TOL_SEARCH * scale) && ok;
+    prox_fcircle ra[2] = {dp_rim(a, -1), dp_rim(a, 1)}, rb[2] = {dp_rim(b, -1), dp_rim(b, 1)}; /* bottom, top */
+    ok = dp_ridge(&s, a, b, rb, PROX_TOL_SEARCH * scale) && ok;
+    ok = dp_ridge(&s, b, a, ra, PROX_TOL_SEARCH * scale) && ok;
     /* cells: rim of A at end ea against rim of B at end eb, the lowest bound first (a deep overlap's
      * best cell then excludes the others) */
     prox_fcircle rims[4][2];
     double lbs[4], fars[4][2];
     int ord[4];
     for (int k = 0; k < 4; ++k) {
-        rims[k][0] = dp_rim(a, k & 1 ? 1 : -1), rims[k][1] = dp_rim(b, k & 2 ? 1 : -1);
+        rims[k][0] = ra[k & 1], rims[k][1] = rb[(k & 2) >> 1];
         lbs[k] = dp_circle_lb(&rims[k][0], &rims[k][1], &fars[k][0], &fars[k][1]);
         int j = k;
         for (; j > 0 && lbs[ord[j - 1]] > lbs[k]; --j) ord[j] = ord[j - 1];
@@ -393,7 +446,7 @@ int sup_rcc_depth_enum(const prox_body *a, const prox_body *b, prox_signed_resul
          * solve); with p1 closest on A's rim: on B's rim. The rest has p1 farthest (>= far_a)
          * or p2 farthest (>= far_b): one solve suffices when either bound exceeds the best;
          * else two, the closest and the farthest partners of A's rim points. */
-        if (far_a > cut) {
+        if (far_a > cut && !(far_b > cut && ca.r > cb.r)) { /* both serve: the larger rim scanned */
             if (!dp_cell_may(&cb, b, eb, &ca, a, ea, cut, tol, 0)) continue;
             ok = dp_cells_closest(&s, &cb, &ca);
         } else if (far_b > cut) {

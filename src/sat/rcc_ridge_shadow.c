@@ -21,6 +21,7 @@
  * every direction is a candidate of the enumeration, which evaluates phi there exactly (any
  * direction is an upper bound), so the candidates hold every stationary point of phi on the ridge:
  * two rims' quartics replaced by a few safeguarded Newton solves without a trigonometric call. */
+#include "sat_internal.h"
 #include "sup_engine.h"
 
 #include "core/tol.h"
@@ -28,26 +29,37 @@
 #include <float.h>
 
 /* G of the outer branch (u = t + b^2 > 0) or the middle one (v = t + a^2 in (0, c), u = v - c) as
- * one form: G(x) = (A / (x + p))^2 + (B / (x + q))^2 - 1 with its derivative. */
+ * one form: G(x) = S(x) - 1, S(x) = (A / (x + p))^2 + (B / (x + q))^2, returned as the function
+ * 1 - 1 / sqrt(S(x)) of the same sign and the same roots, with its derivative S' / (2 S^(3/2)).
+ * Where one term of S dominates (near a pole, or far out where S ~ (A^2 + B^2) / x^2), 1 / sqrt(S)
+ * is nearly linear in x, so Newton's steps on it land close to the root from anywhere in the
+ * bracket (a few steps instead of the ten or so that G itself takes down its poles). */
 static double rs_g(double A, double B, double p, double q, double x, double *dg)
 {
-    double f0 = A / (x + p), f1 = B / (x + q);
-    *dg = -2.0 * (f0 * f0 / (x + p) + f1 * f1 / (x + q));
-    return f0 * f0 + f1 * f1 - 1.0;
+    double f0 = A / (x + p), f1 = B / (x + q), S = f0 * f0 + f1 * f1, is = 1.0 / sqrt(S);
+    *dg = -(f0 * f0 / (x + p) + f1 * f1 / (x + q)) * is / S;
+    return 1.0 - is;
 }
 
 /* The root of G in the bracket (lo, hi) where G changes sign once (G(lo) has the sign slo), from
- * x: Newton's steps kept inside the bracket, bisection otherwise (Press et al., rtsafe), to full
- * precision. G is convex on each branch, so from a start on its positive side Newton approaches
- * the root monotonically and quadratically once near. */
+ * x: Newton's steps on rs_g's form kept inside the bracket, else the secant of the bracket's ends
+ * when both were evaluated, else bisection (Press et al., rtsafe), to full precision; quadratic once
+ * near the (simple) root. The secant matters when an iterate lands on the root itself with the far
+ * sign by rounding: that end then blocks every Newton step toward it (bisection alone would take
+ * some forty halvings to full precision), and the secant puts the root there. */
 static double rs_root(double A, double B, double p, double q, double lo, double hi, double slo, double x)
 {
+    double glo = NAN, ghi = NAN;
     for (int it = 0; it < 40; ++it) {
         double dg, g = rs_g(A, B, p, q, x, &dg);
         if (g == 0.0) return x;
-        if ((g > 0.0) == (slo > 0.0)) lo = x; else hi = x;
+        if ((g > 0.0) == (slo > 0.0)) lo = x, glo = g; else hi = x, ghi = g;
         double xn = x - g / dg;
-        if (!(xn > lo && xn < hi)) xn = 0.5 * (lo + hi); /* Newton left the bracket: bisect */
+        if (!(xn > lo && xn < hi)) { /* Newton left the bracket: the secant, else bisection */
+            double xs = lo - glo * ((hi - lo) / (ghi - glo));
+            if (xs == lo || xs == hi) return xs; /* the root at an evaluated end, to rounding */
+            xn = xs > lo && xs < hi ? xs : 0.5 * (lo + hi);
+        }
         if (fabs(xn - x) <= 4.0 * DBL_EPSILON * fabs(x) || !(xn > lo && xn < hi)) return xn;
         x = xn;
     }
@@ -80,8 +92,19 @@ static double rs_mid(double A, double B, double c, double v)
  * v = A (left of the left root) and at v = c - B (right of the right one). */
 static double rs_root_mid(double A, double B, double c, double v0, double v1)
 {
-    if (v0 < v1) return rs_root(A, B, 0.0, -c, v0, v1, 1.0, A < v1 ? A : 0.5 * v1);
-    return rs_root(A, B, 0.0, -c, v1, v0, -1.0, c - B > v1 ? c - B : 0.5 * (v1 + c));
+    /* G's quadratic model at its minimum v1, G(v1) + G''(v1) (v - v1)^2 / 2 with G'' = 6 (A^2 / v^4 +
+     * B^2 / (v - c)^4), puts the roots at v1 -+ dv: the start when it lies in the bracket. When the two
+     * roots nearly merge (a foot near the evolute, G(v1) -> 0-) Newton from afar would approach the
+     * near-double root only linearly, halving its error per step; from the model's root it is
+     * quadratic at once. */
+    double f0 = A / v1, f1 = B / (v1 - c), gm = f0 * f0 + f1 * f1 - 1.0;
+    double g2 = 6.0 * (f0 * f0 / (v1 * v1) + f1 * f1 / ((v1 - c) * (v1 - c))), dv = sqrt(fmax(0.0, -2.0 * gm / g2));
+    if (v0 < v1) {
+        double x = v1 - dv;
+        return rs_root(A, B, 0.0, -c, v0, v1, 1.0, x > v0 && x < v1 ? x : (A < v1 ? A : 0.5 * v1));
+    }
+    double x = v1 + dv;
+    return rs_root(A, B, 0.0, -c, v1, v0, -1.0, x > v1 && x < v0 ? x : (c - B > v1 ? c - B : 0.5 * (v1 + c)));
 }
 
 /* Adds the direction of E's normal (n0, n1) in the plane frame (e1, e2) to out (3D, not unit). */
@@ -93,9 +116,17 @@ static void rs_push(prox_vec3 *out, int *n, int max, prox_vec3 e1, prox_vec3 e2,
 
 /* The normals at the feet from p = (y0, y1) to the ellipse of semi-axes a >= b > 0 (axes e1, e2),
  * except the farthest foot; 0, or -1 when p is E's centre (every direction is stationary for a
- * circle; the caller then takes the general path). */
-int sup_ellipse_feet(double a, double b, double y0, double y1, prox_vec3 e1, prox_vec3 e2, prox_vec3 *out, int *n,
-                     int max)
+ * circle; the caller then takes the general path). `side` 0 asks for all of them; otherwise only for
+ * the minimiser of h_E(D) - D.p over the half circle side D.e2 >= 0 (side +-1; its ends +-e1 are the
+ * caller's) or over the whole circle (side 2). The feet's quadrants decide which are needed: the
+ * outer foot (t > -b^2) lies in p's quadrant, so its normal's e2 component has the sign s1 of y1,
+ * while the middle branch's feet (t + b^2 < 0) have x1 = b^2 y1 / (t + b^2) of the sign -s1 (and the
+ * farthest foot is never a minimum). A half's minimiser is at an end or at an interior stationary
+ * point, a foot whose normal lies in the half: the outer foot alone when side = s1, the middle
+ * branch alone when side = -s1. Over the whole circle the outer foot is the nearest point of E's
+ * boundary (Eberly 2013: the largest root of G), so its normal is the minimiser. */
+static int ellipse_feet(double a, double b, double y0, double y1, prox_vec3 e1, prox_vec3 e2, prox_vec3 *out, int *n,
+                        int max, int side)
 {
     double s0 = y0 < 0.0 ? -1.0 : 1.0, s1 = y1 < 0.0 ? -1.0 : 1.0, z0 = fabs(y0), z1 = fabs(y1);
     double c = (a - b) * (a + b), A = a * z0, B = b * z1;
@@ -105,12 +136,15 @@ int sup_ellipse_feet(double a, double b, double y0, double y1, prox_vec3 e1, pro
         rs_push(out, n, max, e1, e2, 1.0, 0.0);
         return 0;
     }
+    int outer = side == 0 || side == 2 || side * s1 > 0.0, middle = side == 0 || (side != 2 && side * s1 < 0.0);
     /* the foot in p's quadrant: t > -b^2 */
     if (z1 > 0.0) {
-        double u = rs_root_outer(A, B, c);
-        rs_push(out, n, max, e1, e2, s0 * z0 / (u + c), s1 * z1 / u);
+        if (outer) {
+            double u = rs_root_outer(A, B, c);
+            rs_push(out, n, max, e1, e2, s0 * z0 / (u + c), s1 * z1 / u);
+        }
     } else { /* p on the major axis: the near vertex (t = a z0 - a^2), and when that lies below
-              * -b^2 (a z0 < c) the two feet of the limit t -> -b^2 */
+              * -b^2 (a z0 < c) the two feet of the limit t -> -b^2 (closed forms: all kept) */
         rs_push(out, n, max, e1, e2, s0, 0.0);
         if (A < c) {
             double x0 = a * a * z0 / c, r = 1.0 - (x0 / a) * (x0 / a); /* foot (x0, +-b sqrt(r)) */
@@ -119,7 +153,7 @@ int sup_ellipse_feet(double a, double b, double y0, double y1, prox_vec3 e1, pro
             rs_push(out, n, max, e1, e2, s0 * x0 / (a * a), -x1 / (b * b));
         }
     }
-    if (!(c > 0.0)) return 0;
+    if (!(c > 0.0) || !middle) return 0;
     /* the middle branch t in (-a^2, -b^2), v = t + a^2 in (0, c) */
     if (z0 > 0.0 && z1 > 0.0) {
         double k = cbrt((A / B) * (A / B)), vm = c / (1.0 + 1.0 / k); /* G' = 0: v / -u = (A / B)^(2/3) */
@@ -141,7 +175,15 @@ int sup_ellipse_feet(double a, double b, double y0, double y1, prox_vec3 e1, pro
     return 0;
 }
 
-int sup_ridge_shadow(const prox_body *lat, const prox_body *oth, prox_vec3 delta, prox_vec3 *out, int max)
+int sup_ellipse_feet(double a, double b, double y0, double y1, prox_vec3 e1, prox_vec3 e2, prox_vec3 *out, int *n,
+                     int max)
+{
+    return ellipse_feet(a, b, y0, y1, e1, e2, out, n, max, 0);
+}
+
+/* The ridge's candidates (sup_ridge_shadow, sat_internal.h's sup_ridge_shadow_min when `minimum`). */
+static int ridge_shadow(const prox_body *lat, const prox_body *oth, prox_vec3 delta, prox_vec3 *out, int max,
+                        int minimum)
 {
     prox_vec3 w = lat->cyl.w, wo = oth->cyl.w;
     double cw = fabs(prox_v3_dot(w, wo));
@@ -157,7 +199,22 @@ int sup_ridge_shadow(const prox_body *lat, const prox_body *oth, prox_vec3 delta
     double d2 = oth->cyl.hh * prox_v3_dot(wo, e2), p0 = prox_v3_dot(delta, e1), p1 = prox_v3_dot(delta, e2);
     int n = 0;
     rs_push(out, &n, max, e1, e2, 1.0, 0.0); /* the ends of the halves: both lateral lines */
-    for (int h = -1; h <= 1; h += 2)
-        if (sup_ellipse_feet(a, b, p0, p1 + h * d2, e1, e2, out, &n, max) < 0) return -1;
+    /* the half of p = delta + h d is D.d <= 0 for h = +1, D.d >= 0 for h = -1: side -h sign(d2) of e2;
+     * with d2 = 0 both halves are one function on the whole circle */
+    for (int h = -1; h <= 1; h += 2) {
+        int side = !minimum ? 0 : d2 == 0.0 ? 2 : (h * d2 > 0.0 ? -1 : 1);
+        if (ellipse_feet(a, b, p0, p1 + h * d2, e1, e2, out, &n, max, side) < 0) return -1;
+        if (side == 2) break;
+    }
     return n;
+}
+
+int sup_ridge_shadow(const prox_body *lat, const prox_body *oth, prox_vec3 delta, prox_vec3 *out, int max)
+{
+    return ridge_shadow(lat, oth, delta, out, max, 0);
+}
+
+int sup_ridge_shadow_min(const prox_body *lat, const prox_body *oth, prox_vec3 delta, prox_vec3 *out, int max)
+{
+    return ridge_shadow(lat, oth, delta, out, max, 1);
 }

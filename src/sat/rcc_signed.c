@@ -17,6 +17,15 @@ static atomic_ullong g_depth_fallbacks;
 
 unsigned long long prox_sat_depth_fallbacks(void) { return atomic_load_explicit(&g_depth_fallbacks, memory_order_relaxed); }
 
+/* prox_body_scaled in place for a cylinder body (its centre, cylinder and size: the only fields a
+ * PROX_BODY_CYL uses), without copying the whole body twice. */
+static void body_scale(prox_body *b, double f)
+{
+    b->c = prox_v3_scale(b->c, f);
+    b->cyl = prox_cyl_scaled(&b->cyl, f);
+    b->size *= f;
+}
+
 /* Bodies of a validated pair, both relative to A's base (exact by Sterbenz for a pair far from the
  * origin, which keeps its relative precision) and at unit scale (a power of two, exact): *o and *f
  * receive that origin and scale. */
@@ -30,15 +39,17 @@ static void pair_bodies(const prox_rcc *a, const prox_rcc *b, prox_body *ba, pro
     *ba = prox_body_make(&sa);
     *bb = prox_body_make(&sb);
     *f = prox_unit_scale(fmax(prox_v3_dist(ba->c, bb->c), fmax(fmax(ba->cyl.h, bb->cyl.h), fmax(ba->cyl.r, bb->cyl.r))));
-    *ba = prox_body_scaled(ba, *f);
-    *bb = prox_body_scaled(bb, *f);
+    body_scale(ba, *f);
+    body_scale(bb, *f);
 }
 
-/* A result of the scaled, relative pair in the caller's coordinates. */
+/* A result of the scaled, relative pair in the caller's coordinates (the bounds of sd scale with it). */
 static prox_signed_result absolute(prox_signed_result r, prox_vec3 o, double f)
 {
     if (r.status != PROX_OK) return r;
     r.sd /= f;
+    r.sd_lower /= f;
+    r.sd_upper /= f;
     r.p1 = prox_v3_mad(o, 1.0 / f, r.p1);
     r.p2 = prox_v3_mad(o, 1.0 / f, r.p2);
     return r;
@@ -81,6 +92,24 @@ prox_signed_result prox_sat_rcc_depth(const prox_rcc *a, const prox_rcc *b)
     double f;
     if ((r.status = prepare(a, b, &ba, &bb, &o, &f)) != PROX_OK) return r;
     return absolute(depth_bodies(&ba, &bb), o, f);
+}
+
+prox_signed_result prox_sat_rcc_depth_bounded(const prox_rcc *a, const prox_rcc *b, int *bounded)
+{
+    prox_signed_result r = {0};
+    prox_body ba, bb;
+    prox_vec3 o;
+    double f;
+    *bounded = 0;
+    if ((r.status = prepare(a, b, &ba, &bb, &o, &f)) != PROX_OK) return r;
+    r = depth_bodies(&ba, &bb);
+    /* an overlapping answer's enclosure depends on the pair only through centre differences, support
+     * functions and sizes: the scaled, relative bodies give it, scaled back below */
+    if (r.status == PROX_OK && r.sd <= 0.0) {
+        prox_body_signed_bounds(&ba, &bb, &r);
+        *bounded = 1;
+    }
+    return absolute(r, o, f);
 }
 
 prox_signed_result prox_sat_rcc_signed(const prox_rcc *a, const prox_rcc *b)

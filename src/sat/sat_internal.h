@@ -36,6 +36,11 @@ prox_signed_result prox_sat_rcc_signed(const prox_rcc *a, const prox_rcc *b);
  * settled. Validates both. */
 prox_signed_result prox_sat_rcc_depth(const prox_rcc *a, const prox_rcc *b);
 
+/* prox_sat_rcc_depth with the proved enclosure of an overlapping answer (prox_body_signed_bounds,
+ * evaluated on the pair at unit scale relative to A's base, then scaled back): *bounded = 1 when
+ * sd_lower, sd_upper and certified are set (sd <= 0), else 0 and the caller bounds the answer. */
+prox_signed_result prox_sat_rcc_depth_bounded(const prox_rcc *a, const prox_rcc *b, int *bounded);
+
 /* Penetration depth of a box and a cylinder known to overlap: the closed-form enumeration of
  * box_rcc_depth.c, the global search of sup_engine.c for a degenerate pose (counted below).
  * Validates both. */
@@ -48,5 +53,13 @@ unsigned long long prox_sat_box_depth_fallbacks(void);
 /* How many overlapping cylinder pairs since start-up the depth enumeration could not settle and
  * handed to the global search of sup_engine.c (a rare fallback; the tests and the bench read it). */
 unsigned long long prox_sat_depth_fallbacks(void);
+
+/* sup_ridge_shadow (sup_engine.h) reduced to what the depth enumeration needs: candidate directions
+ * (not unit, each with both signs) holding a MINIMISER of phi on the ridge D.w = 0 of `lat` (not every
+ * stationary point: a half circle whose nearest-point foot lies inside it skips its middle-branch
+ * feet). Same returns as sup_ridge_shadow (rcc_ridge_shadow.c). */
+struct prox_body;
+int sup_ridge_shadow_min(const struct prox_body *lat, const struct prox_body *oth, prox_vec3 delta, prox_vec3 *out,
+                         int max);
 
 #endif
