@@ -230,6 +230,34 @@ static void test_fuzz_signed_witness_tiny_disk(void **state)
     assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-12 * S);
 }
 
+/* fuzz/crashes/pairs-speck-rhp-disk-*: an RHP 6e-67 across and 1.4e-76 high at the origin, touching
+ * (5.6e-38 apart, 4e-30 of the scale) a cylinder of radius 7e-9 and height 4.6e-72 above it. GJK
+ * encloses the origin to rounding, and the depth search's descent from its best start needs many
+ * halvings of a gradient step across the speck's faces: stopped after 8 (as the many starts are), it
+ * left a depth of 1.2e-6 S with witnesses 0.5 S apart. The best's own descent keeps halving. */
+static void test_fuzz_speck_rhp_disk(void **state)
+{
+    (void)state;
+    prox_rhp h = {prox_v3(0, 0, 0), prox_v3(0, 1.80492527548519e-153, 1.3980459370475454e-76),
+                  {prox_v3(1.207373746603704e-153, 6.3522879150557213e-67, 0), prox_v3(-5.5012427065911404e-67, 3.1761439575278607e-67, -1.3499265682588742e-230),
+                   prox_v3(-5.5012427065911404e-67, -3.1761439575278607e-67, -1.3499265682588742e-230)}};
+    prox_shape a = prox_shape_from_rhp(h);
+    prox_shape b = prox_shape_from_rcc((prox_rcc){prox_v3(0, 2.4888311715110058e-91, 5.6492506810176948e-38),
+                                                  prox_v3(1.3987219298729592e-76, 1.3980432860952889e-76, 4.5810391494743659e-72),
+                                                  7.0415073798985561e-09});
+    assert_int_equal(prox_shape_validate(&a), PROX_OK);
+    assert_int_equal(prox_shape_validate(&b), PROX_OK);
+    prox_signed_result r = prox_shape_signed_distance(&a, &b);
+    assert_int_equal(r.status, PROX_OK);
+    double S = prox_shape_pair_scale(&a, &b);
+    assert_true(fabs(r.sd) <= 1e-9 * S); /* touching, within the depth bar */
+    assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-9 * S);
+    double r0 = 1e-9 * S;
+    prox_shape ba = prox_shape_from_sph((prox_sph){r.p1, r0}), bb = prox_shape_from_sph((prox_sph){r.p2, r0});
+    assert_true(prox_shape_distance(&a, &ba).distance <= r0);
+    assert_true(prox_shape_distance(&b, &bb).distance <= r0);
+}
+
 /* fuzz/crashes/pairs-axis-support-*: an ellipsoid of size 1 at the origin against a cylinder 1e50 away
  * whose axis points exactly along the line of centres. The cylinder's support point along its axis
  * took the radial direction from a residual at rounding level that lay along the axis itself, which
@@ -323,7 +351,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_ell_subnormal_rho),
         cmocka_unit_test(test_fuzz_sph_rcc_subnormal_normal),
         cmocka_unit_test(test_fuzz_degenerate_aspect),
-        cmocka_unit_test(test_fuzz_signed_witness_tiny_disk),
+        cmocka_unit_test(test_fuzz_signed_witness_tiny_disk), cmocka_unit_test(test_fuzz_speck_rhp_disk),
         cmocka_unit_test(test_fuzz_axis_support_point),
         cmocka_unit_test(test_fuzz_ell_subnormal_axis),
     };

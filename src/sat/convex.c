@@ -75,6 +75,7 @@ typedef struct cvx {
     double gjk_rel;   /* GJK also stops at |v| + phi <= gjk_rel |v| (0: only at rounding) */
     double best_phi;
     prox_vec3 best_d;
+    int halvings;     /* of a gradient step's line search (newton_step) */
     int nk;
     cvx_kink k[CVX_MAXK];
     int ntop;
@@ -393,9 +394,10 @@ static double newton_step(cvx *s, prox_vec3 *dp, double *fp)
     double len = prox_hypot2(x1, x2);
     if (!(len > 0.0)) return 0.0;
     if (len > 0.5) x1 *= 0.5 / len, x2 *= 0.5 / len, len = 0.5;
-    /* a gradient step that needs more than CVX_GRAD_HALVINGS halvings has met a kink: the kink
-     * searches take over there */
-    int halvings = a > 0.0 && det > 0.0 ? 30 : CVX_GRAD_HALVINGS;
+    /* among the depth's many starts a gradient step that needs more than CVX_GRAD_HALVINGS halvings
+     * has met a kink, where the kink searches take over; elsewhere (the best's own descent) it keeps
+     * halving, which a body far thinner than the other needs */
+    int halvings = a > 0.0 && det > 0.0 ? 30 : s->halvings;
     for (int ls = 0; ls < halvings; ++ls) {
         prox_vec3 dn = unit(prox_v3_add(d, prox_v3_add(prox_v3_scale(t1, x1), prox_v3_scale(t2, x2))));
         double fn = phi_eval(s, dn);
@@ -1294,7 +1296,9 @@ static int depth_starts(cvx *s)
     prox_vec3 done = {0, 0, 0}; /* the kinks near the best are searched once per best, coarsely:
                                  * the best is refined to rounding after the starts */
     for (int i = 0; i < ns; ++i) {
+        s->halvings = CVX_GRAD_HALVINGS;
         cell_newton(s, st[i]);
+        s->halvings = 30;
         if (prox_v3_dot(done, s->best_d) == 1.0) continue;
         done = s->best_d;
         kinks_local_tol(s, s->best_d, CVX_LOCAL, CVX_COARSE);
@@ -1421,6 +1425,7 @@ static void pair_make(const prox_body *a, const prox_body *b, cvx *s, prox_vec3 
     s->gjk_rel = 0.0;
     s->best_phi = INFINITY;
     s->best_d = prox_v3(0, 0, 1);
+    s->halvings = 30;
     s->nk = s->ntop = 0;
     body_kinks(s, &s->a, 1.0);
     body_kinks(s, &s->b, -1.0);
