@@ -258,6 +258,33 @@ static void test_fuzz_speck_rhp_disk(void **state)
     assert_true(prox_shape_distance(&b, &bb).distance <= r0);
 }
 
+/* fuzz/crashes/pairs-rhp-needle-ell-*: an RHP about 1e-37 across and a needle ellipsoid (semi-axis
+ * 4.8e-38, radius 1.1e-47) overlapping by 7.9e-5 of the scale. With the valleys of the kink circles
+ * located only to 1e-6 rad among the depth's starts, the normal stayed that far off and the witnesses
+ * missed p2 - p1 = sd n by 5e-9 S; and a cover whose pruned bounds equal the threshold failed its own
+ * certificate by an ulp (best - lower <= tol, where the pruning test lower >= best - tol holds). */
+static void test_fuzz_rhp_needle_ell(void **state)
+{
+    (void)state;
+    prox_rhp h = {prox_v3(0, 5.0758836746312984e-116, 0), prox_v3(0, 1.7448407937390965e-76, 7.406757887653272e-38),
+                  {prox_v3(1.7969872529911386e-52, 5.3542345654239286e-38, -1.2613193290107081e-76),
+                   prox_v3(-4.6369031514778472e-38, 2.6771172827119799e-38, -6.3065966450535771e-77),
+                   prox_v3(-4.6369031514778649e-38, -2.6771172827119486e-38, 6.3065966450535035e-77)}};
+    prox_shape a = prox_shape_from_rhp(h);
+    prox_shape b = prox_shape_from_ell((prox_ell){prox_v3(2.1085801683440298e-52, 5.3530955725837765e-38, 6.7683817567755913e-43),
+                                                   prox_v3(2.0049418238732789e-76, 1.7253262322270832e-47, 4.7641868958379713e-38),
+                                                   1.110049511311543e-47});
+    assert_int_equal(prox_shape_validate(&a), PROX_OK);
+    assert_int_equal(prox_shape_validate(&b), PROX_OK);
+    prox_signed_result r = prox_shape_signed_distance(&a, &b);
+    assert_int_equal(r.status, PROX_OK);
+    double S = prox_shape_pair_scale(&a, &b);
+    assert_true(r.sd < 0.0);
+    assert_true(r.certified);
+    assert_true(r.sd_lower <= r.sd && r.sd <= r.sd_upper && r.sd_upper - r.sd_lower <= 1e-9 * S);
+    assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-12 * S);
+}
+
 /* fuzz/crashes/pairs-axis-support-*: an ellipsoid of size 1 at the origin against a cylinder 1e50 away
  * whose axis points exactly along the line of centres. The cylinder's support point along its axis
  * took the radial direction from a residual at rounding level that lay along the axis itself, which
@@ -352,6 +379,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_sph_rcc_subnormal_normal),
         cmocka_unit_test(test_fuzz_degenerate_aspect),
         cmocka_unit_test(test_fuzz_signed_witness_tiny_disk), cmocka_unit_test(test_fuzz_speck_rhp_disk),
+        cmocka_unit_test(test_fuzz_rhp_needle_ell),
         cmocka_unit_test(test_fuzz_axis_support_point),
         cmocka_unit_test(test_fuzz_ell_subnormal_axis),
     };

@@ -44,7 +44,7 @@
 #define CVX_GJK_IT 96      /* GJK iterations (polytopes finish in far fewer) */
 #define CVX_CIRCLE_SAMPLES 64
 #define CVX_GRAD_HALVINGS 8
-#define CVX_COARSE 1e-6    /* bracket (rad) of a whole circle's valleys: the best is refined locally */
+
 #define CVX_LOCAL 0.05     /* radius (rad) of the local kink search around the best direction */
 #define CVX_NEAR 1e-5      /* a direction this close (rad) to a kink names it for the witnesses */
 #define CVX_BB_DEPTH 40    /* cover of the sphere: icosahedron faces split up to 40 times (1e-12 rad) */
@@ -289,14 +289,14 @@ static double circ_slope(const cvx *s, const cvx_circ *C, double th, prox_vec3 d
 /* Minimum of phi along the circle in [lo, hi]: the root of the slope by secant steps, every third a
  * bisection (a kink of another body on the circle makes the slope jump: bisection reaches it).
  * Every point is recorded; returns the root (the lower endpoint when the slope does not change sign). */
-static prox_vec3 circ_min_tol(cvx *s, const cvx_circ *C, double lo, double hi, double tol)
+static prox_vec3 circ_min(cvx *s, const cvx_circ *C, double lo, double hi)
 {
     prox_vec3 dl = circ_at(C, lo), dh = circ_at(C, hi), bd = dl;
     double gl = circ_slope(s, C, lo, dl), gh = circ_slope(s, C, hi, dh), fl = consider(s, dl), fh = consider(s, dh), bf = fl;
     if (fh < bf) bf = fh, bd = dh;
     if (!(gl < 0.0 && gh > 0.0)) return bd;
     int it = 0;
-    for (; it < 100 && hi - lo > tol; ++it) {
+    for (; it < 100 && hi - lo > PROX_TOL_ANGLE; ++it) {
         double th = lo - gl * (hi - lo) / (gh - gl);
         if (!(th > lo && th < hi) || it % 3 == 2) th = 0.5 * (lo + hi);
         prox_vec3 d = circ_at(C, th);
@@ -310,8 +310,6 @@ static prox_vec3 circ_min_tol(cvx *s, const cvx_circ *C, double lo, double hi, d
      * the stationary point, not the lowest value, gives the support points */
     return it < 100 ? circ_at(C, 0.5 * (lo + hi)) : bd;
 }
-
-static prox_vec3 circ_min(cvx *s, const cvx_circ *C, double lo, double hi) { return circ_min_tol(s, C, lo, hi, PROX_TOL_ANGLE); }
 
 /* Angle of the projection of d on the circle's plane. */
 static double circ_angle(const cvx_circ *C, prox_vec3 d) { return atan2(prox_v3_dot(d, C->v), prox_v3_dot(d, C->u)); }
@@ -331,14 +329,14 @@ static void circ_global(cvx *s, const cvx_kink *k)
     for (int i = 0; i < CVX_CIRCLE_SAMPLES; ++i) {
         int ip = (i + CVX_CIRCLE_SAMPLES - 1) % CVX_CIRCLE_SAMPLES, in = (i + 1) % CVX_CIRCLE_SAMPLES;
         int up = g[i] < 0.0 && g[in] > 0.0, down = g[ip] < 0.0 && g[i] > 0.0; /* a valley next to i */
-        if (up) circ_min_tol(s, &C, i * step, (i + 1) * step, CVX_COARSE);
-        else if (!down && f[i] <= f[ip] && f[i] <= f[in]) circ_min_tol(s, &C, (i - 1) * step, (i + 1) * step, CVX_COARSE);
+        if (up) circ_min(s, &C, i * step, (i + 1) * step);
+        else if (!down && f[i] <= f[ip] && f[i] <= f[in]) circ_min(s, &C, (i - 1) * step, (i + 1) * step);
     }
 }
 
 /* Kinks within r of d: points evaluated, circles searched within r of d's projection, crossings of
  * two near circles evaluated. */
-static void kinks_local_tol(cvx *s, prox_vec3 d, double r, double tol)
+static void kinks_local(cvx *s, prox_vec3 d, double r)
 {
     for (int i = 0; i < s->nk; ++i) {
         const cvx_kink *k = &s->k[i];
@@ -346,7 +344,7 @@ static void kinks_local_tol(cvx *s, prox_vec3 d, double r, double tol)
         if (!k->circle) { consider(s, k->w); continue; }
         cvx_circ C = circ_make(k);
         double th = circ_angle(&C, d), dr = r / fmax(C.s, 1e-3);
-        circ_min_tol(s, &C, th - dr, th + dr, tol);
+        circ_min(s, &C, th - dr, th + dr);
         for (int j = i + 1; j < s->nk; ++j) {
             prox_vec3 x[2];
             if (!s->k[j].circle || kink_dist(&s->k[j], d) > r) continue;
@@ -355,8 +353,6 @@ static void kinks_local_tol(cvx *s, prox_vec3 d, double r, double tol)
         }
     }
 }
-
-static void kinks_local(cvx *s, prox_vec3 d, double r) { kinks_local_tol(s, d, r, PROX_TOL_ANGLE); }
 
 /* Every kink: points, the crossings of every two circles, every circle searched whole. */
 static void kinks_global(cvx *s)
@@ -1293,15 +1289,14 @@ static int depth_starts(cvx *s)
     prox_vec3 st[CVX_TOPK];
     int ns = s->ntop;
     for (int i = 0; i < ns; ++i) st[i] = s->td[i];
-    prox_vec3 done = {0, 0, 0}; /* the kinks near the best are searched once per best, coarsely:
-                                 * the best is refined to rounding after the starts */
+    prox_vec3 done = {0, 0, 0}; /* the kinks near the best are searched once per best */
     for (int i = 0; i < ns; ++i) {
         s->halvings = CVX_GRAD_HALVINGS;
         cell_newton(s, st[i]);
         s->halvings = 30;
         if (prox_v3_dot(done, s->best_d) == 1.0) continue;
         done = s->best_d;
-        kinks_local_tol(s, s->best_d, CVX_LOCAL, CVX_COARSE);
+        kinks_local(s, s->best_d, CVX_LOCAL);
     }
     cell_newton(s, s->best_d);
     return s->best_phi < 0.0;
@@ -1403,7 +1398,9 @@ static void depth_cover(cvx *s, prox_convex_info *info)
     info->cells = cv.cells;
     info->lower = fmin(cv.lb, s->best_phi);
     info->upper = s->best_phi;
-    info->certified = !cv.incomplete && s->best_phi - info->lower <= cv.tol;
+    /* the pruning test itself (each pruned bound >= the best then less tol >= the best now less tol,
+     * rounding being monotone), not best - lower <= tol, which can miss by an ulp */
+    info->certified = !cv.incomplete && info->lower >= s->best_phi - cv.tol;
 }
 
 /* ---- entry points ------------------------------------------------------------------------------ */
