@@ -285,6 +285,29 @@ static void test_fuzz_rhp_needle_ell(void **state)
     assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-12 * S);
 }
 
+/* fuzz/crashes/pairs-box-rcc-unit-normal-*: a box and a cylinder 1.8e-43 apart at scale 4.9e-33
+ * (4e-11 S): the signed distance's normal, (p2 - p1) divided by the distance, came out 1.03 long (the
+ * distance and |p2 - p1| differ by rounding of S). It is normalised by |p2 - p1|. */
+static void test_fuzz_box_rcc_unit_normal(void **state)
+{
+    (void)state;
+    prox_box x = {prox_v3(5.2038347277141554e-55, 6.7682715877818666e-43, 1.9005797148876562e-52),
+                  {prox_v3(4.8525853120970212e-33, 1.3709971058516578e-71, 5.354216541011549e-38),
+                   prox_v3(5.6713997359164896e-43, -1.3161605196790144e-71, -5.14006075943841e-38),
+                   prox_v3(0, 4.0170954453763435e-57, -1.0286147725546321e-90)}};
+    prox_shape a = prox_shape_from_box(x);
+    prox_shape b = prox_shape_from_rcc((prox_rcc){prox_v3(2.3165694317458448e-52, 8.6008126424867274e-43, 1.1760699155797873e-47),
+                                                  prox_v3(2.485839516356204e-91, 4.6645179592040898e-33, 6.3798628115946223e-67),
+                                                  1.2439549944525115e-47});
+    assert_int_equal(prox_shape_validate(&a), PROX_OK);
+    assert_int_equal(prox_shape_validate(&b), PROX_OK);
+    prox_signed_result r = prox_shape_signed_distance(&a, &b);
+    assert_int_equal(r.status, PROX_OK);
+    double S = prox_shape_pair_scale(&a, &b);
+    assert_true(fabs(prox_v3_norm(r.normal) - 1.0) <= 1e-12);
+    assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-9 * S);
+}
+
 /* fuzz/crashes/pairs-axis-support-*: an ellipsoid of size 1 at the origin against a cylinder 1e50 away
  * whose axis points exactly along the line of centres. The cylinder's support point along its axis
  * took the radial direction from a residual at rounding level that lay along the axis itself, which
@@ -380,6 +403,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_degenerate_aspect),
         cmocka_unit_test(test_fuzz_signed_witness_tiny_disk), cmocka_unit_test(test_fuzz_speck_rhp_disk),
         cmocka_unit_test(test_fuzz_rhp_needle_ell),
+        cmocka_unit_test(test_fuzz_box_rcc_unit_normal),
         cmocka_unit_test(test_fuzz_axis_support_point),
         cmocka_unit_test(test_fuzz_ell_subnormal_axis),
     };

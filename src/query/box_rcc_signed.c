@@ -27,11 +27,13 @@ static prox_signed_result box_rcc_signed(const prox_box *a, const prox_rcc *b)
     if (r.status != PROX_OK) return r;
     if (!d.intersect && d.distance > 0.0) { /* disjoint: sd = distance, unit normal from p1 to p2 */
         r.sd = d.distance;
-        r.normal = prox_v3_divs(prox_v3_sub(d.p2, d.p1), d.distance);
+        /* normalised by |p2 - p1| itself: the distance differs from it by rounding of S, which at a
+         * gap of 1e-11 S turned the normal 3 % off unit length */
+        r.normal = prox_v3_normalize(prox_v3_sub(d.p2, d.p1));
         r.p1 = d.p1;
         r.p2 = d.p2;
-    r.sd_lower = d.certified ? d.certificate_gap : 0.0; /* the duality certificate */
-    r.certified = d.certified;
+        r.sd_lower = d.certified ? d.certificate_gap : 0.0; /* the duality certificate */
+        r.certified = d.certified;
         return r;
     }
     /* overlapping: minimum of h_A(D) + h_B(-D) over unit D, every stratum enumerated in closed
