@@ -443,6 +443,18 @@ static double pair_gap(const prox_bframe *A, const prox_bframe *B, prox_vec3 p1,
     return fmax(bb_gap(A, B, n), contact_gap(A, B, p1, p2, n, S));
 }
 
+
+/* A disjoint answer proved by its gap: distance d between p1 and p2, g the proven lower bound. */
+static int certified_answer(prox_distance_result *r, double d, prox_vec3 p1, prox_vec3 p2, double g)
+{
+    r->distance = d;
+    r->p1 = p1;
+    r->p2 = p2;
+    r->certificate_gap = g;
+    r->certified = 1;
+    return 1;
+}
+
 /* Distance of disjoint boxes separated along the unit L: the support features along L (then along
  * the pair's direction) and their exact distance d, accepted when a gap proves it (d - gap <=
  * PROX_TOL_CERT S: the gap is a lower bound and d an upper bound). Returns 0 when three rounds leave
@@ -459,14 +471,7 @@ static int certified_distance(const prox_bframe *A, const prox_bframe *B, prox_v
         n = prox_v3_divs(prox_v3_sub(p2, p1), d);
         double g = contact_gap(A, B, p1, p2, n, S); /* usually proves it alone */
         if (d - g > PROX_TOL_CERT * S) g = fmax(g, bfeat_gap(A, B, &fa, &fb, n));
-        if (d - g <= PROX_TOL_CERT * S) {
-            r->distance = d;
-            r->p1 = p1;
-            r->p2 = p2;
-            r->certificate_gap = g;
-            r->certified = 1;
-            return 1;
-        }
+        if (d - g <= PROX_TOL_CERT * S) return certified_answer(r, d, p1, p2, g);
     }
     return 0;
 }
@@ -621,12 +626,7 @@ static int sat_certified(const prox_bframe *A, const prox_bframe *B, int i, prox
                          &p2);
     }
     if (!(d > tol) || d - g > PROX_TOL_CERT * S) return 0;
-    r->distance = d;
-    r->p1 = p1;
-    r->p2 = p2;
-    r->certificate_gap = g;
-    r->certified = 1;
-    return 1;
+    return certified_answer(r, d, p1, p2, g);
 }
 
 /* prox_box_pair_distance of a pair at unit scale (docs/algorithms/box_speed.md). In order: the centre
