@@ -443,7 +443,6 @@ static double pair_gap(const prox_bframe *A, const prox_bframe *B, prox_vec3 p1,
     return fmax(bb_gap(A, B, n), contact_gap(A, B, p1, p2, n, S));
 }
 
-
 /* A disjoint answer proved by its gap: distance d between p1 and p2, g the proven lower bound. */
 static int certified_answer(prox_distance_result *r, double d, prox_vec3 p1, prox_vec3 p2, double g)
 {
