@@ -285,6 +285,49 @@ static void test_fuzz_rhp_needle_ell(void **state)
     assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-12 * S);
 }
 
+/* fuzz/crashes/pairs-rhp-lean-needle-*: an RHP 1e-42 long whose facet vectors, 1.2e-76 long, lean
+ * 6e-11 rad towards its height (inside PROX_BOX_ORTHO_TOL). With the card's own vectors as side
+ * normals, the corners' spread along each was the lean times the height (6e-53), so the aspect test
+ * passed a needle 1e-34 as wide as it is long; its corners then collapsed and a sphere 1e-13 away
+ * was given the sphere's centre as a common point, outside the needle. The side normals are the facet vectors'
+ * parts across the height, as the hexagon is built, and the needle is outside the supported aspect
+ * ratio. The same card with facet vectors 1e-9 of the height is valid, and its side planes pass
+ * through the top corners as through the bottom ones. */
+static void test_fuzz_rhp_lean_needle(void **state)
+{
+    (void)state;
+    prox_rhp h = {prox_v3(0, 1.7241863383316155e-314, 0), prox_v3(1.3687218047129105e-52, 9.9618511490410413e-43, 2.8963157129448456e-57),
+                  {prox_v3(9.8534262643718509e-77, 0, 6.9900236741924278e-77),
+                   prox_v3(1.0980251207091207e-76, -8.317091154053073e-87, -5.0383056221666099e-77),
+                   prox_v3(1.1268249427193569e-77, -8.317091154053073e-87, -1.2028329296359038e-76)}};
+    prox_shape a = prox_shape_from_rhp(h);
+    prox_shape b = prox_shape_from_sph((prox_sph){prox_v3(1.3139866747936691e-47, 1.804925276444093e-153, 1.031703574813918e-13),
+                                                   1.0387856152602562e-13});
+    assert_int_equal(prox_shape_validate(&a), PROX_EINVAL_RANGE);
+    assert_int_not_equal(prox_shape_distance(&a, &b).status, PROX_OK);
+    assert_int_not_equal(prox_shape_signed_distance(&a, &b).status, PROX_OK);
+    /* Facet vectors 1e-9 of the height, leaning the same 6e-11 rad: valid. A point half way in from
+     * each side's middle near the top is in the solid, one half way out is that far from it to 1e-3
+     * (the lean put the top corners 2.5e-2 of the width off the side planes the card's vectors gave). */
+    for (int i = 0; i < 3; ++i) h.r[i] = prox_v3_scale(h.r[i], 1e25);
+    a = prox_shape_from_rhp(h);
+    assert_int_equal(prox_shape_validate(&a), PROX_OK);
+    prox_vec3 w = prox_v3_normalize(h.axis), top = prox_v3_add(h.base, prox_v3_scale(h.axis, 0.999));
+    for (int i = 0; i < 3; ++i) {
+        prox_vec3 u = prox_v3_normalize(prox_v3_sub(h.r[i], prox_v3_scale(w, prox_v3_dot(h.r[i], w))));
+        double len = prox_v3_dot(h.r[i], u);
+        prox_vec3 in = prox_v3_add(top, prox_v3_scale(u, len * 0.5));
+        prox_vec3 out = prox_v3_add(top, prox_v3_scale(u, len * 1.5));
+        prox_shape sin = prox_shape_from_sph((prox_sph){in, 1e-6 * len});
+        prox_shape sout = prox_shape_from_sph((prox_sph){out, 1e-6 * len});
+        prox_distance_result din = prox_shape_distance(&a, &sin), dout = prox_shape_distance(&a, &sout);
+        assert_int_equal(din.status, PROX_OK);
+        assert_int_equal(dout.status, PROX_OK);
+        assert_true(din.distance == 0.0);
+        assert_true(fabs(dout.distance - 0.5 * len) <= 1e-3 * len);
+    }
+}
+
 /* fuzz/crashes/pairs-box-rcc-unit-normal-*: a box and a cylinder 1.8e-43 apart at scale 4.9e-33
  * (4e-11 S): the signed distance's normal, (p2 - p1) divided by the distance, came out 1.03 long (the
  * distance and |p2 - p1| differ by rounding of S). It is normalised by |p2 - p1|. */
@@ -404,6 +447,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_signed_witness_tiny_disk), cmocka_unit_test(test_fuzz_speck_rhp_disk),
         cmocka_unit_test(test_fuzz_rhp_needle_ell),
         cmocka_unit_test(test_fuzz_box_rcc_unit_normal),
+        cmocka_unit_test(test_fuzz_rhp_lean_needle),
         cmocka_unit_test(test_fuzz_axis_support_point),
         cmocka_unit_test(test_fuzz_ell_subnormal_axis),
     };

@@ -285,14 +285,16 @@ void prox_rhp_hexagon(const prox_rhp *h, prox_rhp_section *hx)
 prox_vec3 prox_polytope_rhp(const prox_rhp *h, const prox_rhp_section *hx, prox_polytope *p)
 {
     int side[6];
-    prox_vec3 q[6], sn[6], u[3];
-    for (int i = 0; i < 3; ++i) u[i] = prox_v3_normalize(h->r[i]);
+    prox_vec3 q[6], sn[6];
     for (int k = 0; k < 6; ++k) {
         int j = (k + 1) % 6;
         q[k] = prox_v3_add(prox_v3_scale(hx->e1, hx->x[k][0]), prox_v3_scale(hx->e2, hx->x[k][1]));
-        side[k] = hx->fk[j];              /* side from corner k to corner k + 1 */
-        int i = (hx->fk[j] - 1) / 2;      /* the card's r[i], signed: facet 2i+1 is +r[i] */
-        sn[k] = (hx->fk[j] & 1) ? u[i] : prox_v3_neg(u[i]);
+        side[k] = hx->fk[j]; /* side from corner k to corner k + 1 */
+        /* The card's +-r[i] as the section has it: its part across the height. The card's r[i] itself
+         * may lean up to PROX_BOX_ORTHO_TOL towards the height; its plane would then miss the top
+         * corners by that lean times the height, and a needle's spread along it would be the
+         * height's, not the hexagon's width (the aspect test would pass a 1e-34 thin one). */
+        sn[k] = prox_v3_add(prox_v3_scale(hx->e1, hx->nl[j][0]), prox_v3_scale(hx->e2, hx->nl[j][1]));
     }
     return prism(p, h->base, q, side, sn, 6, h->axis, 7, 8);
 }
