@@ -328,6 +328,41 @@ static void test_fuzz_rhp_lean_needle(void **state)
     }
 }
 
+/* fuzz/crashes/pairs-thin-box-arb-*: an ARB tetrahedron 5e-33 across against a BOX with edges of
+ * 3.3e-33, 6.9e-62 and 7.5e-67, overlapping by 3.2e-7 S. A BOX has no aspect limit, but its polytope,
+ * taken relative to its centroid, lost the two thin edges to rounding (a segment with face planes
+ * through it), and the polytope solver's witnesses missed p2 - p1 = sd normal by 3.3e-6 S. Such a
+ * box goes to the support-function method, whose box support is exact; the same box with its thin
+ * edges 5e8 and 4e8 times shorter than the long one stays with the polytope solver and holds too. */
+static void test_fuzz_thin_box_arb(void **state)
+{
+    (void)state;
+    prox_arb t = {{prox_v3(3.3155999651021467e-33, 3.3088288881520212e-33, 2.5261980302115356e-52),
+                   prox_v3(1.8809654220314158e-153, 8.2373241075824398e-67, 4.9141648237729315e-62),
+                   prox_v3(1.0327730911167174e-47, 7.4998296699012955e-67, 4.8563527139589948e-33),
+                   prox_v3(1.6563688822829495e-47, 3.7008123681729734e-33, 2.4052345417886232e-57),
+                   prox_v3(0, 0, 0), prox_v3(0, 0, 0), prox_v3(0, 0, 0), prox_v3(0, 0, 0)},
+                  {1230, 1240, 1340, 2340, 0, 0}};
+    prox_box x = {prox_v3(5.9351120680648776e-38, 2.4046279508075671e-57, 2.4217931400783491e-52),
+                  {prox_v3(1.1771390418072967e-47, 6.2301155223114098e-38, 3.315620559445334e-33),
+                   prox_v3(-1.3117348647605852e-71, -6.9424761649311972e-62, 1.3045045301015335e-66),
+                   prox_v3(7.4940454005029523e-67, -1.4159502166668002e-76, 5.0295616929504476e-91)}};
+    for (int pass = 0; pass < 2; ++pass) {
+        prox_shape a = prox_shape_from_arb(t), b = prox_shape_from_box(x);
+        assert_int_equal(prox_shape_validate(&a), PROX_OK);
+        assert_int_equal(prox_shape_validate(&b), PROX_OK);
+        double S = prox_shape_pair_scale(&a, &b);
+        prox_signed_result r = prox_shape_signed_distance(&a, &b);
+        assert_int_equal(r.status, PROX_OK);
+        assert_true(r.sd < 0.0);
+        assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-9 * S);
+        prox_distance_result d = prox_shape_distance(&a, &b);
+        assert_int_equal(d.status, PROX_OK);
+        assert_true(d.intersect);
+        x.edge[1] = prox_v3_scale(x.edge[1], 1e20), x.edge[2] = prox_v3_scale(x.edge[2], 1e25);
+    }
+}
+
 /* fuzz/crashes/pairs-box-rcc-unit-normal-*: a box and a cylinder 1.8e-43 apart at scale 4.9e-33
  * (4e-11 S): the signed distance's normal, (p2 - p1) divided by the distance, came out 1.03 long (the
  * distance and |p2 - p1| differ by rounding of S). It is normalised by |p2 - p1|. */
@@ -448,6 +483,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_rhp_needle_ell),
         cmocka_unit_test(test_fuzz_box_rcc_unit_normal),
         cmocka_unit_test(test_fuzz_rhp_lean_needle),
+        cmocka_unit_test(test_fuzz_thin_box_arb),
         cmocka_unit_test(test_fuzz_axis_support_point),
         cmocka_unit_test(test_fuzz_ell_subnormal_axis),
     };

@@ -51,6 +51,34 @@ static route route_of(prox_shape_kind ka, prox_shape_kind kb)
     return ROUTE_CONVEX;
 }
 
+/* A BOX or RPP (no aspect limit, shapes.h) whose polytope keeps its shape: every edge at least
+ * 1/PROX_MAX_ASPECT of the longest, as the added polytopes' widths are. Relative to its centroid a
+ * thinner box's corners lose the thin edges to rounding (a 7e-67 edge beside a 3e-33 one leaves a
+ * segment), so such a box goes to the support-function method, which takes its edges and half
+ * extents exactly. */
+static int poly_fits(const prox_shape *s)
+{
+    double l[3];
+    if (s->kind == PROX_SHAPE_BOX) {
+        for (int i = 0; i < 3; ++i) l[i] = prox_v3_norm(s->u.box.edge[i]);
+    } else if (s->kind == PROX_SHAPE_RPP) {
+        const prox_rpp *r = &s->u.rpp;
+        l[0] = r->xmax - r->xmin, l[1] = r->ymax - r->ymin, l[2] = r->zmax - r->zmin;
+    } else {
+        return 1;
+    }
+    double lo = fmin(l[0], fmin(l[1], l[2])), hi = fmax(l[0], fmax(l[1], l[2]));
+    return !(lo * PROX_MAX_ASPECT < hi); /* NaN sizes pass on to the validator */
+}
+
+/* The route of a pair of shapes: a polytope pair with a box too thin for its polytope goes to the
+ * support-function method. */
+static route route_shapes(const prox_shape *a, const prox_shape *b)
+{
+    route r = route_of(a->kind, b->kind);
+    return r == ROUTE_POLY && !(poly_fits(a) && poly_fits(b)) ? ROUTE_CONVEX : r;
+}
+
 /* PROX_OK when both pointers and kinds can be dispatched (the shapes themselves are validated by
  * the route). */
 static prox_status check_kinds(const prox_shape *a, const prox_shape *b)
@@ -294,7 +322,7 @@ PROX_API prox_distance_result prox_shape_distance(const prox_shape *a, const pro
     }
     default: break;
     }
-    if (route_of(a->kind, b->kind) == ROUTE_POLY) return poly_distance(a, b); /* validates as it builds */
+    if (route_shapes(a, b) == ROUTE_POLY) return poly_distance(a, b); /* validates as it builds */
     if ((r.status = validate2(a, b)) != PROX_OK) return r;
     return convex_distance(a, b);
 }
@@ -323,7 +351,7 @@ PROX_API prox_signed_result prox_shape_signed_distance(const prox_shape *a, cons
     }
     default: break;
     }
-    if (route_of(a->kind, b->kind) == ROUTE_POLY) return poly_signed(a, b); /* validates as it builds */
+    if (route_shapes(a, b) == ROUTE_POLY) return poly_signed(a, b); /* validates as it builds */
     if ((r.status = validate2(a, b)) != PROX_OK) return r;
     return convex_signed(a, b);
 }
