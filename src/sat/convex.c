@@ -30,6 +30,7 @@
  * at its best direction), each accepted only when -phi along the pair's own direction meets it. */
 #include "convex.h"
 
+#include "epa.h"
 #include "core/pl_disk.h"
 #include "core/plane2.h"
 #include "core/tol.h"
@@ -52,6 +53,7 @@
 #define CVX_GOLD 1.6180339887498948482 /* the icosahedron (0, +-1, +-golden) and its cyclic shifts */
 #define CVX_NEAR_GJK 1e-4  /* radius (rad) of the early kink search around GJK's best direction */
 #define CVX_GJK_LOOSE 1e-6 /* a kink-free pair's first GJK stops at this relative gap (then Newton) */
+#define CVX_EPA_POINTS 140 /* support points the depth's inner polytope may take (epa.h) */
 
 static atomic_ulong cvx_global_runs;
 
@@ -287,9 +289,11 @@ static double circ_slope(const cvx *s, const cvx_circ *C, double th, prox_vec3 d
 }
 
 /* Minimum of phi along the circle in [lo, hi]: the root of the slope by secant steps, every third a
- * bisection (a kink of another body on the circle makes the slope jump: bisection reaches it).
+ * bisection (a kink of another body on the circle makes the slope jump: bisection reaches it), to a
+ * bracket of PROX_TOL_ANGLE; exact: then regula falsi with the Illinois halving moves both ends to
+ * the rounding of the angle (an answer's witnesses: a needle's support point moves 2e9 S per rad).
  * Every point is recorded; returns the root (the lower endpoint when the slope does not change sign). */
-static prox_vec3 circ_min(cvx *s, const cvx_circ *C, double lo, double hi)
+static prox_vec3 circ_min_to(cvx *s, const cvx_circ *C, double lo, double hi, int exact)
 {
     prox_vec3 dl = circ_at(C, lo), dh = circ_at(C, hi), bd = dl;
     double gl = circ_slope(s, C, lo, dl), gh = circ_slope(s, C, hi, dh), fl = consider(s, dl), fh = consider(s, dh), bf = fl;
@@ -306,10 +310,22 @@ static prox_vec3 circ_min(cvx *s, const cvx_circ *C, double lo, double hi)
         else if (g < 0.0) lo = th, gl = g;
         else return d;
     }
+    if (it == 100) return bd;
+    for (int k = 0, side = 0; exact && k < 24; ++k) {
+        double th = (lo * gh - hi * gl) / (gh - gl);
+        if (!(th > lo && th < hi)) break; /* no angle between them */
+        double g = circ_slope(s, C, th, circ_at(C, th));
+        if (g > 0.0) hi = th, gh = g, gl *= side == 1 ? 0.5 : 1.0, side = 1;
+        else if (g < 0.0) lo = th, gl = g, gh *= side == -1 ? 0.5 : 1.0, side = -1;
+        else return circ_at(C, th);
+    }
     /* the root of the slope: where the value is flat to rounding (1e-8 rad around a smooth minimum)
      * the stationary point, not the lowest value, gives the support points */
-    return it < 100 ? circ_at(C, 0.5 * (lo + hi)) : bd;
+    return circ_at(C, 0.5 * (lo + hi));
 }
+
+/* The search's circle minimum: bracketed to PROX_TOL_ANGLE. */
+static prox_vec3 circ_min(cvx *s, const cvx_circ *C, double lo, double hi) { return circ_min_to(s, C, lo, hi, 0); }
 
 /* Angle of the projection of d on the circle's plane. */
 static double circ_angle(const cvx_circ *C, prox_vec3 d) { return atan2(prox_v3_dot(d, C->v), prox_v3_dot(d, C->u)); }
@@ -1032,7 +1048,7 @@ static int answer_candidates(cvx *s, prox_vec3 *c, int max)
         if (!k->circle) { c[nc++] = k->w; continue; }
         cvx_circ C = circ_make(k);
         double th = circ_angle(&C, d0), dr = 2.0 * CVX_NEAR / fmax(C.s, 1e-3);
-        c[nc++] = circ_min(s, &C, th - dr, th + dr);
+        c[nc++] = circ_min_to(s, &C, th - dr, th + dr, 1);
         for (int j = i + 1; j < s->nk && nc + 2 <= max; ++j) {
             prox_vec3 x[2];
             if (!s->k[j].circle || kink_dist(&s->k[j], d0) > CVX_NEAR) continue;
@@ -1367,17 +1383,56 @@ static int ball_certified(const cvx *s, const prox_signed_result *r, prox_convex
     return 1;
 }
 
-/* The first try at a depth: the best of the centre line and the icosahedron's vertices, Newton and
- * the local kinks from there, proved by the tangent balls; most shallow contacts end here. Returns 0
- * (and leaves the best direction for the global search) when the balls do not prove it. */
+/* The support point of P for the inner polytope (epa.h); its direction is kept as a candidate. */
+static prox_vec3 epa_support(void *ctx, prox_vec3 d, double *h)
+{
+    cvx *s = ctx;
+    prox_vec3 g = phi_grad(s, d);
+    *h = prox_v3_dot(g, d);
+    record(s, d, phi_eval(s, d));
+    return g;
+}
+
+/* An inner polytope of P from the icosahedron's support points, refined towards the deepest
+ * direction until its nearest triangle proves the best depth found (epa.h); *lower the bound. */
+static int epa_proves(cvx *s, double *lower)
+{
+    prox_vec3 g[12];
+    for (int i = 0; i < 12; ++i) g[i] = phi_grad(s, ico_vertex(i));
+    prox_epa_result e;
+    int ok = prox_epa_depth(epa_support, s, g, 12, cvx_ico_f, 20, s->best_phi, s->best_d, PROX_TOL_DEPTH_CERT * s->S,
+                            PROX_TOL_PHI_ROUND * s->S, CVX_EPA_POINTS, &e);
+    *lower = e.lower;
+    return ok;
+}
+
+/* The depth without the global search, from the best of the centre line and the icosahedron's
+ * vertices: Newton and the local kinks give the answer, proved by the tangent balls at its
+ * witnesses (a shallow contact of smooth or flat parts) or by the inner polytope. A pair with kinks
+ * (a rim, an edge: the balls rarely fit there) builds the polytope first, whose support points
+ * bring the descent near the deepest direction; a smooth pair tries the balls first. Returns 0 (the
+ * best direction left for the global search) when neither proves it. */
 static int depth_quick(cvx *s, prox_signed_result *r, prox_convex_info *info)
 {
     if (prox_v3_norm2(s->delta) > 0.0) consider(s, s->delta), consider(s, prox_v3_neg(s->delta));
     for (int i = 0; i < 12; ++i) consider(s, ico_vertex(i));
+    double lower = -INFINITY;
+    int epa = s->nk > 0 && s->best_phi > 0.0 && epa_proves(s, &lower);
     descend_best(s);
     if (!(s->best_phi > 0.0)) return 0;
     finish_overlap(s, r);
-    return ball_certified(s, r, info);
+    if (!epa && ball_certified(s, r, info)) return 1;
+    if (!epa && s->nk == 0 && epa_proves(s, &lower)) { /* its support points may have found a deeper one */
+        descend_best(s);
+        finish_overlap(s, r);
+        epa = 1;
+    }
+    if (!epa) return 0;
+    /* the bound holds for the best found since (which is no larger) */
+    info->lower = fmin(lower, s->best_phi);
+    info->upper = -r->sd;
+    info->certified = 1;
+    return 1;
 }
 
 /* The cover of the sphere: a proven lower bound on the depth (convex.h). */

@@ -1,0 +1,241 @@
+/* The depth's lower bound by an expanding inner polytope (epa.h). */
+#include "epa.h"
+
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#define EPA_MAXV 160
+#define EPA_MAXF 640
+
+typedef struct epa_face {
+    int v[3];      /* corners, counter-clockwise seen from outside */
+    int adj[3];    /* the face across edge (v[i], v[i+1]) */
+    int live;
+    int flat;      /* no plane: a zero cross product (two corners equal, or all on a line) */
+    prox_vec3 n;   /* unit normal (flat: none) */
+    double d;      /* n . v[0] */
+    prox_vec3 u;   /* the unit direction of the face's point nearest the origin */
+    double key;    /* proven: every point of the face is at least this far from the origin */
+} epa_face;
+
+typedef struct epa {
+    prox_vec3 p[EPA_MAXV];
+    int np;
+    epa_face f[EPA_MAXF];
+    int nf;
+    int freel[EPA_MAXF];
+    int nfree;
+} epa;
+
+/* The point of segment ab nearest the origin. */
+static prox_vec3 seg_near(prox_vec3 a, prox_vec3 b)
+{
+    prox_vec3 e = prox_v3_sub(b, a);
+    double ee = prox_v3_norm2(e), t = ee > 0.0 ? -prox_v3_dot(a, e) / ee : 0.0;
+    return prox_v3_mad(a, t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t), e);
+}
+
+/* The point of triangle abc nearest the origin (approximately: it only chooses the direction of
+ * the face's bound): the origin's foot on the plane when it lies inside, else the nearest of the
+ * three sides. */
+static prox_vec3 tri_near(prox_vec3 a, prox_vec3 b, prox_vec3 c, prox_vec3 n, int flat)
+{
+    if (!flat) {
+        prox_vec3 p = prox_v3_scale(n, prox_v3_dot(n, a));
+        prox_vec3 pa = prox_v3_sub(a, p), pb = prox_v3_sub(b, p), pc = prox_v3_sub(c, p);
+        if (prox_v3_dot(prox_v3_cross(pb, pc), n) >= 0.0 && prox_v3_dot(prox_v3_cross(pc, pa), n) >= 0.0 &&
+            prox_v3_dot(prox_v3_cross(pa, pb), n) >= 0.0)
+            return p;
+    }
+    prox_vec3 q[3] = {seg_near(a, b), seg_near(b, c), seg_near(c, a)};
+    int k = 0;
+    for (int i = 1; i < 3; ++i)
+        if (prox_v3_norm2(q[i]) < prox_v3_norm2(q[k])) k = i;
+    return q[k];
+}
+
+/* The face's plane and its proven bound. Any unit u gives min(u.a, u.b, u.c) <= u.x <= |x| for every
+ * point x of the face (weak duality). u = the normal gives the plane's distance, which is the face's
+ * own when the origin's foot lies inside it; a sliver or flat face (whose plane is rounding, or
+ * none), or one whose plane passes the origin, takes u along its nearest point instead. The bound
+ * holds whatever the rounding of u (only |u| = 1 to 2 eps matters) less the dots' own rounding:
+ * 6 eps of the largest corner. */
+static void face_plane(const epa *E, epa_face *f)
+{
+    prox_vec3 a = E->p[f->v[0]], b = E->p[f->v[1]], c = E->p[f->v[2]];
+    prox_vec3 x = prox_v3_cross(prox_v3_sub(b, a), prox_v3_sub(c, a));
+    double nx = prox_v3_norm(x);
+    double big = 6.0 * DBL_EPSILON * sqrt(fmax(prox_v3_norm2(a), fmax(prox_v3_norm2(b), prox_v3_norm2(c))));
+    f->flat = !(nx > 0.0);
+    f->n = f->flat ? prox_v3(0, 0, 0) : prox_v3_scale(x, 1.0 / nx);
+    f->d = prox_v3_dot(f->n, a);
+    f->u = f->n;
+    f->key = fmin(f->d, fmin(prox_v3_dot(f->n, b), prox_v3_dot(f->n, c))) - big;
+    if (!f->flat && f->key > 1e3 * big) return;
+    prox_vec3 q = tri_near(a, b, c, f->n, f->flat);
+    double nq = prox_v3_norm(q);
+    if (!(nq > 0.0)) return;
+    prox_vec3 u = prox_v3_scale(q, 1.0 / nq);
+    double m = fmin(prox_v3_dot(u, a), fmin(prox_v3_dot(u, b), prox_v3_dot(u, c))) - big;
+    if (f->flat || m > f->key) f->u = u, f->key = m;
+}
+
+static int face_new(epa *E, int a, int b, int c)
+{
+    int k = E->nfree > 0 ? E->freel[--E->nfree] : (E->nf < EPA_MAXF ? E->nf++ : -1);
+    if (k < 0) return -1;
+    epa_face *f = &E->f[k];
+    f->v[0] = a, f->v[1] = b, f->v[2] = c;
+    f->adj[0] = f->adj[1] = f->adj[2] = -1;
+    f->live = 1;
+    face_plane(E, f);
+    return k;
+}
+
+/* The edge of face g that runs from b to a (the reverse of a -> b), or -1. */
+static int edge_back(const epa_face *g, int a, int b)
+{
+    for (int j = 0; j < 3; ++j)
+        if (g->v[j] == b && g->v[(j + 1) % 3] == a) return j;
+    return -1;
+}
+
+/* Links the starting faces (corners < 12) across their edges through a table of directed edges;
+ * 0 when an edge has no reverse (the mesh is not closed). */
+static int link_all(epa *E)
+{
+    signed char at[12][12];
+    memset(at, -1, sizeof at);
+    for (int i = 0; i < E->nf; ++i)
+        for (int j = 0; j < 3; ++j) at[E->f[i].v[j]][E->f[i].v[(j + 1) % 3]] = (signed char)i;
+    for (int i = 0; i < E->nf; ++i)
+        for (int j = 0; j < 3; ++j)
+            if ((E->f[i].adj[j] = at[E->f[i].v[(j + 1) % 3]][E->f[i].v[j]]) < 0) return 0;
+    return 1;
+}
+
+/* The live face of least bound (the one that bounds the depth). */
+static int nearest(const epa *E)
+{
+    int best = -1;
+    double k = INFINITY;
+    for (int i = 0; i < E->nf; ++i)
+        if (E->f[i].live && E->f[i].key < k) k = E->f[i].key, best = i;
+    return best;
+}
+
+/* Replaces face f0 and the faces point w (index iw) sees from there, across edges (a face is seen
+ * when w lies beyond its plane; a flat face reached from a seen one is taken with them), by the fan
+ * from w over their rim. The mesh stays closed whatever the faces' orientations (the bound needs
+ * only that it wraps the origin, checked at the end). 0 when the rim is not made of simple loops or a
+ * face cannot be made. */
+static int expand(epa *E, int f0, int iw)
+{
+    int seen[EPA_MAXF], stack[EPA_MAXF], ns = 0, nseen = 0;
+    prox_vec3 w = E->p[iw];
+    E->f[f0].live = 2; /* 2: seen in this step */
+    stack[ns++] = f0;
+    while (ns > 0) {
+        int i = stack[--ns];
+        seen[nseen++] = i;
+        for (int j = 0; j < 3; ++j) {
+            int g = E->f[i].adj[j];
+            if (E->f[g].live != 1) continue;
+            if (E->f[g].flat || prox_v3_dot(E->f[g].n, w) > E->f[g].d) E->f[g].live = 2, stack[ns++] = g;
+        }
+    }
+    /* the rim: edges of seen faces whose neighbour stays, each becomes a face (a, b, w) */
+    int ra[64], rb[64], rg[64], nr = 0;
+    for (int s = 0; s < nseen; ++s) {
+        const epa_face *f = &E->f[seen[s]];
+        for (int j = 0; j < 3; ++j) {
+            int g = f->adj[j];
+            if (E->f[g].live != 1) continue;
+            if (nr == 64) return 0;
+            ra[nr] = f->v[j], rb[nr] = f->v[(j + 1) % 3], rg[nr] = g, ++nr;
+        }
+    }
+    for (int r = 0; r < nr; ++r) /* simple loops: every rim corner starts exactly one rim edge */
+        for (int q = r + 1; q < nr; ++q)
+            if (ra[r] == ra[q]) return 0;
+    for (int s = 0; s < nseen; ++s) E->f[seen[s]].live = 0, E->freel[E->nfree++] = seen[s];
+    int nf[64];
+    for (int r = 0; r < nr; ++r) {
+        nf[r] = face_new(E, ra[r], rb[r], iw);
+        if (nf[r] < 0) return 0;
+        epa_face *g = &E->f[rg[r]];
+        int j = edge_back(g, ra[r], rb[r]);
+        if (j < 0) return 0;
+        g->adj[j] = nf[r];
+        E->f[nf[r]].adj[0] = rg[r];
+    }
+    for (int r = 0; r < nr; ++r) { /* edge (b, w) meets the face of the rim edge starting at b */
+        int q = 0;
+        while (q < nr && ra[q] != rb[r]) ++q;
+        if (q == nr) return 0;
+        E->f[nf[r]].adj[1] = nf[q];
+        E->f[nf[q]].adj[2] = nf[r];
+    }
+    return 1;
+}
+
+/* The mesh's degree about the origin: its triangles' signed solid angles (Van Oosterom and
+ * Strackee 1983) add up to 4 pi times the number of times it wraps the origin. Every face is at
+ * least the bound > 0 away, so each angle is defined; 1 (to within a half turn: the sum's rounding is
+ * far smaller) means every direction from the origin meets a face. */
+static int wraps_once(const epa *E)
+{
+    double sum = 0.0;
+    for (int i = 0; i < E->nf; ++i) {
+        const epa_face *f = &E->f[i];
+        if (!f->live) continue;
+        prox_vec3 a = E->p[f->v[0]], b = E->p[f->v[1]], c = E->p[f->v[2]];
+        double la = prox_v3_norm(a), lb = prox_v3_norm(b), lc = prox_v3_norm(c);
+        double num = prox_v3_dot(a, prox_v3_cross(b, c));
+        double den = la * lb * lc + prox_v3_dot(a, b) * lc + prox_v3_dot(a, c) * lb + prox_v3_dot(b, c) * la;
+        sum += 2.0 * atan2(num, den);
+    }
+    return fabs(sum - 4.0 * PROX_PI) < PROX_PI;
+}
+
+/* Proved: the bound reaches the upper one and the mesh wraps the origin once. */
+static int proved(const epa *E, prox_epa_result *out, double tol)
+{
+    if (!(out->lower >= out->upper - tol)) return 0;
+    if (wraps_once(E)) return 1;
+    out->lower = -INFINITY;
+    return 0;
+}
+
+int prox_epa_depth(prox_epa_support fs, void *ctx, const prox_vec3 *v, int nv, const unsigned char (*tri)[3], int nt,
+                   double upper, prox_vec3 dir, double tol, double slack, int max_points, prox_epa_result *out)
+{
+    epa E;
+    E.np = nv, E.nf = 0, E.nfree = 0;
+    out->lower = -INFINITY, out->upper = upper, out->dir = dir, out->points = nv;
+    if (nv > 12 || nt > 20) return 0;
+    for (int i = 0; i < nv; ++i) E.p[i] = v[i];
+    for (int t = 0; t < nt; ++t) face_new(&E, tri[t][0], tri[t][1], tri[t][2]);
+    if (!link_all(&E)) return 0;
+    if (max_points > EPA_MAXV) max_points = EPA_MAXV;
+    for (;;) {
+        int i = nearest(&E);
+        if (i < 0) return 0;
+        out->lower = E.f[i].key - slack;
+        if (out->lower >= out->upper - tol) return proved(&E, out, tol);
+        if (E.np >= max_points) break;
+        prox_vec3 u = E.f[i].u;
+        if (!(prox_v3_norm2(u) > 0.0)) break; /* the origin on a flat face */
+        double h;
+        prox_vec3 w = fs(ctx, u, &h);
+        if (h < out->upper) out->upper = h, out->dir = u;
+        if (out->lower >= out->upper - tol) return proved(&E, out, tol);
+        if (!(prox_v3_dot(u, w) > E.f[i].key + slack) || !prox_v3_isfinite(w)) break; /* no point beyond it */
+        E.p[E.np] = w;
+        if (!expand(&E, i, E.np++)) break;
+        out->points = E.np;
+    }
+    out->lower = -INFINITY;
+    return 0;
+}
