@@ -363,6 +363,33 @@ static void test_fuzz_thin_box_arb(void **state)
     }
 }
 
+/* fuzz/crashes/pairs-flat-cone-needle-*: a TRC 1e-42 high with radii 2.5e-91 and 4.2e-33 (a cone so
+ * flat that its lateral normals lie 2.35e-10 rad from its axis) crossed by a needle RCC, 8.6e-11 S
+ * deep. The lateral surface's kink circle, kept by its cosine alone, had cosine -1 in doubles and
+ * collapsed onto the axis: the normal came out the axis and p1 the apex, 8.7e-6 S off p2 - sd normal.
+ * Its sine is kept apart, and the circle, smaller than the search radius, is searched whole; the
+ * normal tilts by 2.35e-10 rad and p1 moves onto the generator under the needle's tip. */
+static void test_fuzz_flat_cone_needle(void **state)
+{
+    (void)state;
+    prox_shape a = prox_shape_from_trc((prox_trc){prox_v3(3.3804736801365374e-57, 1.4519044824369659e-47, 4.7537793470492743e-38),
+                                                   prox_v3(9.9618512300575918e-43, 7.4955226072778192e-67, 3.5379208477231184e-57),
+                                                   2.4876300932210241e-91, 4.2370458799020867e-33});
+    prox_shape b = prox_shape_from_rcc((prox_rcc){prox_v3(3.6579625774051142e-86, 1.3701162368078138e-71, 2.3169820794023654e-52),
+                                                  prox_v3(7.2643449230955801e-43, 5.6469870271868855e-38, 8.6097277008187327e-67),
+                                                  1.7441621087990435e-76});
+    assert_int_equal(prox_shape_validate(&a), PROX_OK);
+    assert_int_equal(prox_shape_validate(&b), PROX_OK);
+    double S = prox_shape_pair_scale(&a, &b);
+    prox_signed_result r = prox_shape_signed_distance(&a, &b);
+    assert_int_equal(r.status, PROX_OK);
+    assert_true(r.sd < 0.0);
+    assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-9 * S);
+    /* the normal leaves the axis by the lateral surface's 2.35e-10 rad */
+    double tilt = prox_v3_norm(prox_v3_cross(r.normal, prox_v3(1, 0, 0)));
+    assert_true(tilt > 2.0e-10 && tilt < 2.7e-10);
+}
+
 /* fuzz/crashes/pairs-box-rcc-unit-normal-*: a box and a cylinder 1.8e-43 apart at scale 4.9e-33
  * (4e-11 S): the signed distance's normal, (p2 - p1) divided by the distance, came out 1.03 long (the
  * distance and |p2 - p1| differ by rounding of S). It is normalised by |p2 - p1|. */
@@ -484,6 +511,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_box_rcc_unit_normal),
         cmocka_unit_test(test_fuzz_rhp_lean_needle),
         cmocka_unit_test(test_fuzz_thin_box_arb),
+        cmocka_unit_test(test_fuzz_flat_cone_needle),
         cmocka_unit_test(test_fuzz_axis_support_point),
         cmocka_unit_test(test_fuzz_ell_subnormal_axis),
     };

@@ -54,6 +54,8 @@
 #define CVX_NEAR_GJK 1e-4  /* radius (rad) of the early kink search around GJK's best direction */
 #define CVX_GJK_LOOSE 1e-6 /* a kink-free pair's first GJK stops at this relative gap (then Newton) */
 #define CVX_EPA_POINTS 140 /* support points the depth's inner polytope may take (epa.h) */
+#define CVX_EPA_LOCAL 1e-3 /* radius (rad) of the kink search around the polytope's deepest direction,
+                            * which its proof puts ~1e-5 rad from the optimum (within 1e-10 S of it) */
 
 static atomic_ulong cvx_global_runs;
 
@@ -63,11 +65,13 @@ static atomic_ulong cvx_gjk_cert; /* distance queries certified by an early exit
 
 /* ---- the pair --------------------------------------------------------------------------------- */
 
-/* A kink of phi: the point D = w (circle = 0) or the circle D.w = c (great circle when c = 0). */
+/* A kink of phi: the point D = w (circle = 0) or the circle D.w = c (great circle when c = 0), of
+ * angular radius atan2(sn, c) about w (sn = sqrt(1 - c^2), kept on its own: a flat cone's 2e-10 rad
+ * circle has c = -1 in doubles). */
 typedef struct cvx_kink {
     int circle;
     prox_vec3 w;
-    double c;
+    double c, sn;
 } cvx_kink;
 
 typedef struct cvx {
@@ -186,7 +190,7 @@ static double consider(cvx *s, prox_vec3 d)
 
 /* ---- kinks -------------------------------------------------------------------------------------- */
 
-static void add_kink(cvx *s, int circle, prox_vec3 w, double c)
+static void add_kink_cs(cvx *s, int circle, prox_vec3 w, double c, double sn)
 {
     if (s->nk >= CVX_MAXK) return;
     for (int i = 0; i < s->nk; ++i) { /* the same circle or point twice (parallel box edges) */
@@ -200,7 +204,10 @@ static void add_kink(cvx *s, int circle, prox_vec3 w, double c)
     k->circle = circle;
     k->w = w;
     k->c = c;
+    k->sn = sn;
 }
+
+static void add_kink(cvx *s, int circle, prox_vec3 w, double c) { add_kink_cs(s, circle, w, c, sqrt(fmax(0.0, 1.0 - c * c))); }
 
 /* The kinks of body b in the direction sg D (sg = 1 for A, -1 for B), as kinks in D: where hc is not
  * differentiable. A point u of b is the point sg u in D; a circle E.w = c in E = sg D is D.w = sg c. */
@@ -222,9 +229,9 @@ static void body_kinks(cvx *s, const prox_body *b, double sg)
     }
     case PROX_BODY_CONE: {
         const prox_cone *k = &b->x.cone;
-        double dr = k->r1 - k->r2; /* the lateral normal: D.w / |P D| = (r1 - r2) / (2 hh) */
+        double dr = k->r1 - k->r2, hy = prox_hypot2(dr, 2.0 * k->hh); /* the lateral normal: D.w / |P D| = (r1 - r2) / (2 hh) */
         add_kink(s, 0, k->w, 0), add_kink(s, 0, prox_v3_neg(k->w), 0);
-        add_kink(s, 1, k->w, sg * dr / prox_hypot2(dr, 2.0 * k->hh));
+        add_kink_cs(s, 1, k->w, sg * dr / hy, 2.0 * k->hh / hy);
         break;
     }
     case PROX_BODY_ECYL:
@@ -238,8 +245,8 @@ static void body_kinks(cvx *s, const prox_body *b, double sg)
 static double kink_dist(const cvx_kink *k, prox_vec3 d)
 {
     if (!k->circle) return angle(d, k->w);
-    double s = sqrt(fmax(1e-300, 1.0 - k->c * k->c));
-    return fabs(prox_v3_dot(d, k->w) - k->c) / s;
+    if (k->sn < 0.1) return fabs(angle(d, k->w) - atan2(k->sn, k->c)); /* a small circle: its radius as an angle */
+    return fabs(prox_v3_dot(d, k->w) - k->c) / k->sn;
 }
 
 /* The crossings of two kink circles: D = x w1 + y w2 +- z n; returns how many (0 or 2). */
@@ -270,7 +277,7 @@ typedef struct cvx_circ {
 
 static cvx_circ circ_make(const cvx_kink *k)
 {
-    cvx_circ C = {k->w, prox_v3_any_perp(k->w), {0, 0, 0}, k->c, sqrt(fmax(0.0, 1.0 - k->c * k->c))};
+    cvx_circ C = {k->w, prox_v3_any_perp(k->w), {0, 0, 0}, k->c, k->sn};
     C.v = prox_v3_cross(k->w, C.u);
     return C;
 }
@@ -288,6 +295,17 @@ static double circ_slope(const cvx *s, const cvx_circ *C, double th, prox_vec3 d
     return prox_v3_dot(phi_grad(s, d), t);
 }
 
+/* The slope and, recorded, the value phi(d) = g . d from the same support point g of P (one pair of
+ * support points instead of two evaluations). */
+static double circ_step(cvx *s, const cvx_circ *C, double th, prox_vec3 d, double *f)
+{
+    prox_vec3 t = prox_v3_scale(prox_v3_sub(prox_v3_scale(C->v, cos(th)), prox_v3_scale(C->u, sin(th))), C->s);
+    prox_vec3 g = phi_grad(s, d);
+    *f = prox_v3_dot(g, d);
+    record(s, d, *f);
+    return prox_v3_dot(g, t);
+}
+
 /* Minimum of phi along the circle in [lo, hi]: the root of the slope by secant steps, every third a
  * bisection (a kink of another body on the circle makes the slope jump: bisection reaches it), to a
  * bracket of PROX_TOL_ANGLE; exact: then regula falsi with the Illinois halving moves both ends to
@@ -296,7 +314,7 @@ static double circ_slope(const cvx *s, const cvx_circ *C, double th, prox_vec3 d
 static prox_vec3 circ_min_to(cvx *s, const cvx_circ *C, double lo, double hi, int exact)
 {
     prox_vec3 dl = circ_at(C, lo), dh = circ_at(C, hi), bd = dl;
-    double gl = circ_slope(s, C, lo, dl), gh = circ_slope(s, C, hi, dh), fl = consider(s, dl), fh = consider(s, dh), bf = fl;
+    double fl, fh, gl = circ_step(s, C, lo, dl, &fl), gh = circ_step(s, C, hi, dh, &fh), bf = fl;
     if (fh < bf) bf = fh, bd = dh;
     if (!(gl < 0.0 && gh > 0.0)) return bd;
     int it = 0;
@@ -304,7 +322,7 @@ static prox_vec3 circ_min_to(cvx *s, const cvx_circ *C, double lo, double hi, in
         double th = lo - gl * (hi - lo) / (gh - gl);
         if (!(th > lo && th < hi) || it % 3 == 2) th = 0.5 * (lo + hi);
         prox_vec3 d = circ_at(C, th);
-        double g = circ_slope(s, C, th, d), f = consider(s, d);
+        double f, g = circ_step(s, C, th, d, &f);
         if (f <= bf) bf = f, bd = d;
         if (g > 0.0) hi = th, gh = g;
         else if (g < 0.0) lo = th, gl = g;
@@ -324,30 +342,48 @@ static prox_vec3 circ_min_to(cvx *s, const cvx_circ *C, double lo, double hi, in
     return circ_at(C, 0.5 * (lo + hi));
 }
 
-/* The search's circle minimum: bracketed to PROX_TOL_ANGLE. */
-static prox_vec3 circ_min(cvx *s, const cvx_circ *C, double lo, double hi) { return circ_min_to(s, C, lo, hi, 0); }
-
 /* Angle of the projection of d on the circle's plane. */
 static double circ_angle(const cvx_circ *C, prox_vec3 d) { return atan2(prox_v3_dot(d, C->v), prox_v3_dot(d, C->u)); }
 
 /* The whole circle: samples with their slopes, every discrete minimum and every sign change of the
- * slope refined (a valley between two samples that no sample's value shows). */
-static void circ_global(cvx *s, const cvx_kink *k)
+ * slope refined (a valley between two samples that no sample's value shows); returns the lowest of
+ * the refined minima (exact: each to the rounding of the angle, circ_min_to). */
+static prox_vec3 circ_whole(cvx *s, const cvx_circ *C, int exact)
 {
-    cvx_circ C = circ_make(k);
-    double f[CVX_CIRCLE_SAMPLES], g[CVX_CIRCLE_SAMPLES];
+    double f[CVX_CIRCLE_SAMPLES], g[CVX_CIRCLE_SAMPLES], bf = INFINITY;
     const double step = 2.0 * PROX_PI / CVX_CIRCLE_SAMPLES;
+    prox_vec3 bd = circ_at(C, 0.0);
     for (int i = 0; i < CVX_CIRCLE_SAMPLES; ++i) {
-        prox_vec3 d = circ_at(&C, i * step);
-        f[i] = consider(s, d);
-        g[i] = circ_slope(s, &C, i * step, d);
+        prox_vec3 d = circ_at(C, i * step);
+        g[i] = circ_step(s, C, i * step, d, &f[i]);
     }
     for (int i = 0; i < CVX_CIRCLE_SAMPLES; ++i) {
         int ip = (i + CVX_CIRCLE_SAMPLES - 1) % CVX_CIRCLE_SAMPLES, in = (i + 1) % CVX_CIRCLE_SAMPLES;
         int up = g[i] < 0.0 && g[in] > 0.0, down = g[ip] < 0.0 && g[i] > 0.0; /* a valley next to i */
-        if (up) circ_min(s, &C, i * step, (i + 1) * step);
-        else if (!down && f[i] <= f[ip] && f[i] <= f[in]) circ_min(s, &C, (i - 1) * step, (i + 1) * step);
+        prox_vec3 d;
+        if (up) d = circ_min_to(s, C, i * step, (i + 1) * step, exact);
+        else if (!down && f[i] <= f[ip] && f[i] <= f[in]) d = circ_min_to(s, C, (i - 1) * step, (i + 1) * step, exact);
+        else continue;
+        double fd = phi_eval(s, d);
+        if (fd < bf) bf = fd, bd = d;
     }
+    return bd;
+}
+
+static void circ_global(cvx *s, const cvx_kink *k)
+{
+    cvx_circ C = circ_make(k);
+    circ_whole(s, &C, 0);
+}
+
+/* The minimum on circle C near d (within r): the arc within r of d's projection, or the whole circle
+ * when it is small enough to lie within r (a flat cone's lateral kink, 2e-10 rad across: the arc
+ * around d's projection, whose angle is then any, would miss its minimum). */
+static prox_vec3 circ_near(cvx *s, const cvx_circ *C, prox_vec3 d, double r, int exact)
+{
+    if (C->s * PROX_PI <= r) return circ_whole(s, C, exact);
+    double th = circ_angle(C, d), dr = r / fmax(C->s, 1e-3);
+    return circ_min_to(s, C, th - dr, th + dr, exact);
 }
 
 /* Kinks within r of d: points evaluated, circles searched within r of d's projection, crossings of
@@ -359,8 +395,7 @@ static void kinks_local(cvx *s, prox_vec3 d, double r)
         if (kink_dist(k, d) > r) continue;
         if (!k->circle) { consider(s, k->w); continue; }
         cvx_circ C = circ_make(k);
-        double th = circ_angle(&C, d), dr = r / fmax(C.s, 1e-3);
-        circ_min(s, &C, th - dr, th + dr);
+        circ_near(s, &C, d, r, 0);
         for (int j = i + 1; j < s->nk; ++j) {
             prox_vec3 x[2];
             if (!s->k[j].circle || kink_dist(&s->k[j], d) > r) continue;
@@ -557,6 +592,8 @@ typedef struct gjk_out {
     int verdict;      /* 1 separated, 0 origin enclosed (overlap), 2 undecided (touching band, stall) */
     prox_vec3 xa, xb; /* the simplex's pair: xa in A, xb in B (a common point when enclosed) */
     double vnorm;     /* |xa - xb| (an upper bound on the distance) */
+    int n;            /* the final simplex: n points w[] of P (4: a tetrahedron about the origin) */
+    prox_vec3 w[4];
 } gjk_out;
 
 static gjk_pt gjk_support(const cvx *s, prox_vec3 d)
@@ -599,8 +636,9 @@ static gjk_out gjk_run(cvx *s)
         if (!(prox_v3_norm2(v) < vv0)) break;
     }
     if (verdict < 0) verdict = separated ? 1 : 2;
-    gjk_out o = {verdict, {0, 0, 0}, {0, 0, 0}, 0.0};
+    gjk_out o = {verdict, {0, 0, 0}, {0, 0, 0}, 0.0, n, {{0, 0, 0}}};
     for (int i = 0; i < n; ++i) o.xa = prox_v3_mad(o.xa, lam[i], p[i].pa), o.xb = prox_v3_mad(o.xb, lam[i], p[i].pb);
+    for (int i = 0; i < n; ++i) o.w[i] = p[i].w;
     o.vnorm = prox_v3_dist(o.xa, o.xb);
     return o;
 }
@@ -1047,8 +1085,7 @@ static int answer_candidates(cvx *s, prox_vec3 *c, int max)
         if (kink_dist(k, d0) > CVX_NEAR) continue;
         if (!k->circle) { c[nc++] = k->w; continue; }
         cvx_circ C = circ_make(k);
-        double th = circ_angle(&C, d0), dr = 2.0 * CVX_NEAR / fmax(C.s, 1e-3);
-        c[nc++] = circ_min_to(s, &C, th - dr, th + dr, 1);
+        c[nc++] = circ_near(s, &C, d0, 2.0 * CVX_NEAR, 1);
         for (int j = i + 1; j < s->nk && nc + 2 <= max; ++j) {
             prox_vec3 x[2];
             if (!s->k[j].circle || kink_dist(&s->k[j], d0) > CVX_NEAR) continue;
@@ -1323,15 +1360,17 @@ static int depth_starts(cvx *s)
  * centres, searching locally only from one better than the best by its tolerance, so the best can
  * be left at a non-stationary point of a smooth cell (an ELL against a box vertex: 0.17 rad off, the
  * depth 1e-3 S too large, p2 - p1 1e-2 S off the normal); Newton from there reaches the minimum. */
-static void descend_best(cvx *s)
+static void descend_within(cvx *s, double r)
 {
     for (int it = 0; it < 4; ++it) {
         double f0 = s->best_phi;
         cell_newton(s, s->best_d);
-        kinks_local(s, s->best_d, CVX_LOCAL);
+        kinks_local(s, s->best_d, r);
         if (!(s->best_phi < f0)) break;
     }
 }
+
+static void descend_best(cvx *s) { descend_within(s, CVX_LOCAL); }
 
 /* A ball inside body b touching its boundary point x (outward normal n): the largest offset r <= rmax
  * (to 2^-10 of rmax) whose centre x - r n lies at depth >= r less the rounding slack
@@ -1393,15 +1432,24 @@ static prox_vec3 epa_support(void *ctx, prox_vec3 d, double *h)
     return g;
 }
 
-/* An inner polytope of P from the icosahedron's support points, refined towards the deepest
- * direction until its nearest triangle proves the best depth found (epa.h); *lower the bound. */
-static int epa_proves(cvx *s, double *lower)
+/* An inner polytope of P, refined towards the deepest direction until its nearest triangle proves
+ * the best depth found (epa.h); *lower the bound. It starts from the icosahedron's support points;
+ * when their mesh folds about the origin (a thin P with the origin near its rim), from GJK's final
+ * tetrahedron, which encloses the origin. */
+static int epa_proves(cvx *s, const gjk_out *go, double *lower)
 {
+    static const unsigned char tet[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
     prox_vec3 g[12];
     for (int i = 0; i < 12; ++i) g[i] = phi_grad(s, ico_vertex(i));
     prox_epa_result e;
-    int ok = prox_epa_depth(epa_support, s, g, 12, cvx_ico_f, 20, s->best_phi, s->best_d, PROX_TOL_DEPTH_CERT * s->S,
-                            PROX_TOL_PHI_ROUND * s->S, CVX_EPA_POINTS, &e);
+    double tol = PROX_TOL_DEPTH_CERT * s->S, slack = PROX_TOL_PHI_ROUND * s->S;
+    int ok = prox_epa_depth(epa_support, s, g, 12, cvx_ico_f, 20, s->best_phi, s->best_d, tol, slack, CVX_EPA_POINTS, &e);
+    if (!ok && e.points == 0 && go->n == 4) {
+        prox_vec3 t[4] = {go->w[0], go->w[1], go->w[2], go->w[3]};
+        prox_vec3 x = prox_v3_cross(prox_v3_sub(t[1], t[0]), prox_v3_sub(t[2], t[0]));
+        if (prox_v3_dot(x, prox_v3_sub(t[3], t[0])) < 0.0) t[1] = go->w[2], t[2] = go->w[1]; /* w3 behind face 0,2,1 */
+        ok = prox_epa_depth(epa_support, s, t, 4, tet, 4, s->best_phi, s->best_d, tol, slack, CVX_EPA_POINTS, &e);
+    }
     *lower = e.lower;
     return ok;
 }
@@ -1412,17 +1460,17 @@ static int epa_proves(cvx *s, double *lower)
  * (a rim, an edge: the balls rarely fit there) builds the polytope first, whose support points
  * bring the descent near the deepest direction; a smooth pair tries the balls first. Returns 0 (the
  * best direction left for the global search) when neither proves it. */
-static int depth_quick(cvx *s, prox_signed_result *r, prox_convex_info *info)
+static int depth_quick(cvx *s, const gjk_out *go, prox_signed_result *r, prox_convex_info *info)
 {
     if (prox_v3_norm2(s->delta) > 0.0) consider(s, s->delta), consider(s, prox_v3_neg(s->delta));
     for (int i = 0; i < 12; ++i) consider(s, ico_vertex(i));
     double lower = -INFINITY;
-    int epa = s->nk > 0 && s->best_phi > 0.0 && epa_proves(s, &lower);
-    descend_best(s);
+    int epa = s->nk > 0 && s->best_phi > 0.0 && epa_proves(s, go, &lower);
+    descend_within(s, epa ? CVX_EPA_LOCAL : CVX_LOCAL);
     if (!(s->best_phi > 0.0)) return 0;
     finish_overlap(s, r);
     if (!epa && ball_certified(s, r, info)) return 1;
-    if (!epa && s->nk == 0 && epa_proves(s, &lower)) { /* its support points may have found a deeper one */
+    if (!epa && s->nk == 0 && epa_proves(s, go, &lower)) { /* its support points may have found a deeper one */
         descend_best(s);
         finish_overlap(s, r);
         epa = 1;
@@ -1528,7 +1576,7 @@ static prox_signed_result signed_scaled(cvx *s, prox_convex_info *info, gjk_out 
         return r;
     }
     info->intersect = 1;
-    if (!full && g.verdict == 0 && depth_quick(s, &r, info)) return r;
+    if (!full && g.verdict == 0 && depth_quick(s, &g, &r, info)) return r;
     if (g.verdict == 0 && depth_starts(s)) return signed_touching(s, info, &g);
     descend_best(s);
     finish_overlap(s, &r);

@@ -217,7 +217,7 @@ int prox_epa_depth(prox_epa_support fs, void *ctx, const prox_vec3 *v, int nv, c
     if (nv > 12 || nt > 20) return 0;
     for (int i = 0; i < nv; ++i) E.p[i] = v[i];
     for (int t = 0; t < nt; ++t) face_new(&E, tri[t][0], tri[t][1], tri[t][2]);
-    if (!link_all(&E)) return 0;
+    if (!link_all(&E) || !wraps_once(&E)) { out->points = 0; return 0; } /* folded about the origin */
     if (max_points > EPA_MAXV) max_points = EPA_MAXV;
     for (;;) {
         int i = nearest(&E);

@@ -28,7 +28,8 @@ typedef struct prox_epa_result {
 } prox_epa_result;
 
 /* Starts from the points v[0..nv-1] (support points of P, nv <= 12) joined by the closed mesh of
- * triangles tri[0..nt-1] (nt <= 20, counter-clockwise seen from outside) and refines until lower >=
+ * triangles tri[0..nt-1] (nt <= 20, counter-clockwise seen from outside; one that does not wrap the
+ * origin once returns 0 at once, out->points = 0) and refines until lower >=
  * upper - tol, upper starting at the caller's upper (with its direction dir). slack: how far a
  * computed support point may lie from P (rounding), subtracted from the bound. Returns 1 when proved
  * (out->lower the bound), 0 when max_points was reached or the mesh could not be continued (no point
