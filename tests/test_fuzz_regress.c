@@ -390,6 +390,31 @@ static void test_fuzz_flat_cone_needle(void **state)
     assert_true(tilt > 2.0e-10 && tilt < 2.7e-10);
 }
 
+/* fuzz/crashes/pairs-flat-rec-speck-*: an REC with semi-axes 4.3e-33 and 1.04e-42 (its support point
+ * moves a1^2 / a2, 2e9 S, per rad of the normal) holding a 4e-62 RCC 1.2e-10 S from its flat side. The
+ * optimum lies on the REC's kink circle, whose search measured angles from an arbitrary origin, near
+ * 1 rad, where they resolve 1e-16: the normal kept 6e-17 off, and p1 stood 1.3e-7 S off p2 - sd normal.
+ * Angles are measured from the start direction's projection. */
+static void test_fuzz_flat_rec_speck(void **state)
+{
+    (void)state;
+    prox_rec e = {prox_v3(0, 2.1085753642496182e-52, 1.8043426158015814e-153),
+                  prox_v3(9.0667447068838282e-43, 3.8903696715447937e-33, 1.312377718283597e-47),
+                  prox_v3(4.2785913514001617e-33, -9.9715191006057791e-43, -1.4511562733555997e-58),
+                  prox_v3(7.8234627302759869e-67, 3.5082482334713479e-57, -1.0399736552673013e-42)};
+    prox_shape a = prox_shape_from_rec(e);
+    prox_shape b = prox_shape_from_rcc((prox_rcc){prox_v3(3.2425151552161738e-86, 6.5251640814697118e-38, 4.9084415041371802e-62),
+                                                  prox_v3(2.5826636175792067e-57, 4.9094022323932142e-62, 4.5899647488703429e-72),
+                                                  4.1801574660598025e-62});
+    assert_int_equal(prox_shape_validate(&a), PROX_OK);
+    assert_int_equal(prox_shape_validate(&b), PROX_OK);
+    double S = prox_shape_pair_scale(&a, &b);
+    prox_signed_result r = prox_shape_signed_distance(&a, &b);
+    assert_int_equal(r.status, PROX_OK);
+    assert_true(r.sd < 0.0 && fabs(r.sd + 1.0399736552673013e-42) <= 1e-9 * S);
+    assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-9 * S);
+}
+
 /* fuzz/crashes/pairs-box-rcc-unit-normal-*: a box and a cylinder 1.8e-43 apart at scale 4.9e-33
  * (4e-11 S): the signed distance's normal, (p2 - p1) divided by the distance, came out 1.03 long (the
  * distance and |p2 - p1| differ by rounding of S). It is normalised by |p2 - p1|. */
@@ -512,6 +537,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_rhp_lean_needle),
         cmocka_unit_test(test_fuzz_thin_box_arb),
         cmocka_unit_test(test_fuzz_flat_cone_needle),
+        cmocka_unit_test(test_fuzz_flat_rec_speck),
         cmocka_unit_test(test_fuzz_axis_support_point),
         cmocka_unit_test(test_fuzz_ell_subnormal_axis),
     };

@@ -342,9 +342,6 @@ static prox_vec3 circ_min_to(cvx *s, const cvx_circ *C, double lo, double hi, in
     return circ_at(C, 0.5 * (lo + hi));
 }
 
-/* Angle of the projection of d on the circle's plane. */
-static double circ_angle(const cvx_circ *C, prox_vec3 d) { return atan2(prox_v3_dot(d, C->v), prox_v3_dot(d, C->u)); }
-
 /* The whole circle: samples with their slopes, every discrete minimum and every sign change of the
  * slope refined (a valley between two samples that no sample's value shows); returns the lowest of
  * the refined minima (exact: each to the rounding of the angle, circ_min_to). */
@@ -379,11 +376,24 @@ static void circ_global(cvx *s, const cvx_kink *k)
 /* The minimum on circle C near d (within r): the arc within r of d's projection, or the whole circle
  * when it is small enough to lie within r (a flat cone's lateral kink, 2e-10 rad across: the arc
  * around d's projection, whose angle is then any, would miss its minimum). */
-static prox_vec3 circ_near(cvx *s, const cvx_circ *C, prox_vec3 d, double r, int exact)
+static prox_vec3 circ_near(cvx *s, const cvx_kink *k, prox_vec3 d, double r, int exact)
 {
-    if (C->s * PROX_PI <= r) return circ_whole(s, C, exact);
-    double th = circ_angle(C, d), dr = r / fmax(C->s, 1e-3);
-    return circ_min_to(s, C, th - dr, th + dr, exact);
+    cvx_circ C = circ_make(k);
+    if (C.s * PROX_PI <= r) return circ_whole(s, &C, exact);
+    /* angles measured from d's projection: near it they resolve 1e-300 rad, not the 1e-16 of an
+     * angle near 1 (a flat REC's support point moves 2e9 S per rad along its kink circle) */
+    prox_vec3 u = prox_v3_reject(d, C.w);
+    if (prox_v3_norm2(u) > 0.0) C.u = unit(u), C.v = prox_v3_cross(C.w, C.u);
+    double dr = r / fmax(C.s, 1e-3);
+    if (fabs(prox_v3_dot(d, C.w) - C.c) <= 4.0 * DBL_EPSILON) {
+        /* d on the circle with phi rising both ways (at another kink crossing it: a box's face normal
+         * on an edge circle, where the slope jumps and the bracket search would bisect ~100 times
+         * onto it): the circle's minimum is within e of d */
+        double e = 16.0 * DBL_EPSILON, fm, fp;
+        if (circ_step(s, &C, -e, circ_at(&C, -e), &fm) <= 0.0 && circ_step(s, &C, e, circ_at(&C, e), &fp) >= 0.0)
+            return exact ? circ_min_to(s, &C, -e, e, 1) : d;
+    }
+    return circ_min_to(s, &C, -dr, dr, exact);
 }
 
 /* Kinks within r of d: points evaluated, circles searched within r of d's projection, crossings of
@@ -394,8 +404,7 @@ static void kinks_local(cvx *s, prox_vec3 d, double r)
         const cvx_kink *k = &s->k[i];
         if (kink_dist(k, d) > r) continue;
         if (!k->circle) { consider(s, k->w); continue; }
-        cvx_circ C = circ_make(k);
-        circ_near(s, &C, d, r, 0);
+        circ_near(s, k, d, r, 0);
         for (int j = i + 1; j < s->nk; ++j) {
             prox_vec3 x[2];
             if (!s->k[j].circle || kink_dist(&s->k[j], d) > r) continue;
@@ -1084,8 +1093,7 @@ static int answer_candidates(cvx *s, prox_vec3 *c, int max)
         const cvx_kink *k = &s->k[i];
         if (kink_dist(k, d0) > CVX_NEAR) continue;
         if (!k->circle) { c[nc++] = k->w; continue; }
-        cvx_circ C = circ_make(k);
-        c[nc++] = circ_near(s, &C, d0, 2.0 * CVX_NEAR, 1);
+        c[nc++] = circ_near(s, k, d0, 2.0 * CVX_NEAR, 1);
         for (int j = i + 1; j < s->nk && nc + 2 <= max; ++j) {
             prox_vec3 x[2];
             if (!s->k[j].circle || kink_dist(&s->k[j], d0) > CVX_NEAR) continue;
