@@ -13,16 +13,18 @@ typedef struct epa_face {
     int adj[3];    /* the face across edge (v[i], v[i+1]) */
     int live;
     int flat;      /* no plane: a zero cross product (two corners equal, or all on a line) */
+    int pos;       /* proved counter-clockwise seen from the origin (its plane passes beyond it) */
     prox_vec3 n;   /* unit normal (flat: none) */
     double d;      /* n . v[0] */
     prox_vec3 u;   /* the unit direction of the face's point nearest the origin */
-    double key;    /* proven: every point of the face is at least this far from the origin */
 } epa_face;
 
 typedef struct epa {
     prox_vec3 p[EPA_MAXV];
+    double p2[EPA_MAXV]; /* |p|^2 */
     int np;
     epa_face f[EPA_MAXF];
+    double key[EPA_MAXF]; /* proven: every point of face f is at least key[f] from the origin (INFINITY: gone) */
     int nf;
     int freel[EPA_MAXF];
     int nfree;
@@ -60,25 +62,31 @@ static prox_vec3 tri_near(prox_vec3 a, prox_vec3 b, prox_vec3 c, prox_vec3 n, in
  * own when the origin's foot lies inside it; a sliver or flat face (whose plane is rounding, or
  * none), or one whose plane passes the origin, takes u along its nearest point instead. The bound
  * holds whatever the rounding of u (only |u| = 1 to 2 eps matters) less the dots' own rounding:
- * 6 eps of the largest corner. */
-static void face_plane(const epa *E, epa_face *f)
+ * 6 eps of the largest corner. The orientation is proved when n . a exceeds its error: the cross
+ * product x of the edges e1, e2 is off by 3 eps |e1| |e2| per component, the dot by 3 eps |a| |x|. */
+static void face_plane(epa *E, int k)
 {
+    epa_face *f = &E->f[k];
     prox_vec3 a = E->p[f->v[0]], b = E->p[f->v[1]], c = E->p[f->v[2]];
-    prox_vec3 x = prox_v3_cross(prox_v3_sub(b, a), prox_v3_sub(c, a));
-    double nx = prox_v3_norm(x);
-    double big = 6.0 * DBL_EPSILON * sqrt(fmax(prox_v3_norm2(a), fmax(prox_v3_norm2(b), prox_v3_norm2(c))));
+    prox_vec3 e1 = prox_v3_sub(b, a), e2 = prox_v3_sub(c, a), x = prox_v3_cross(e1, e2);
+    double nx = prox_v3_norm(x), la = sqrt(E->p2[f->v[0]]);
+    double big = 6.0 * DBL_EPSILON * sqrt(fmax(E->p2[f->v[0]], fmax(E->p2[f->v[1]], E->p2[f->v[2]])));
     f->flat = !(nx > 0.0);
     f->n = f->flat ? prox_v3(0, 0, 0) : prox_v3_scale(x, 1.0 / nx);
     f->d = prox_v3_dot(f->n, a);
     f->u = f->n;
-    f->key = fmin(f->d, fmin(prox_v3_dot(f->n, b), prox_v3_dot(f->n, c))) - big;
-    if (!f->flat && f->key > 1e3 * big) return;
-    prox_vec3 q = tri_near(a, b, c, f->n, f->flat);
-    double nq = prox_v3_norm(q);
-    if (!(nq > 0.0)) return;
-    prox_vec3 u = prox_v3_scale(q, 1.0 / nq);
-    double m = fmin(prox_v3_dot(u, a), fmin(prox_v3_dot(u, b), prox_v3_dot(u, c))) - big;
-    if (f->flat || m > f->key) f->u = u, f->key = m;
+    double key = fmin(f->d, fmin(prox_v3_dot(f->n, b), prox_v3_dot(f->n, c))) - big;
+    f->pos = !f->flat && f->d > 6.0 * DBL_EPSILON * la * (sqrt(prox_v3_norm2(e1) * prox_v3_norm2(e2)) / nx + 1.0);
+    if (!f->pos || !(key > 1e3 * big)) {
+        prox_vec3 q = tri_near(a, b, c, f->n, f->flat);
+        double nq = prox_v3_norm(q);
+        if (nq > 0.0) {
+            prox_vec3 u = prox_v3_scale(q, 1.0 / nq);
+            double m = fmin(prox_v3_dot(u, a), fmin(prox_v3_dot(u, b), prox_v3_dot(u, c))) - big;
+            if (f->flat || m > key) f->u = u, key = m;
+        }
+    }
+    E->key[k] = key;
 }
 
 static int face_new(epa *E, int a, int b, int c)
@@ -89,7 +97,7 @@ static int face_new(epa *E, int a, int b, int c)
     f->v[0] = a, f->v[1] = b, f->v[2] = c;
     f->adj[0] = f->adj[1] = f->adj[2] = -1;
     f->live = 1;
-    face_plane(E, f);
+    face_plane(E, k);
     return k;
 }
 
@@ -121,7 +129,7 @@ static int nearest(const epa *E)
     int best = -1;
     double k = INFINITY;
     for (int i = 0; i < E->nf; ++i)
-        if (E->f[i].live && E->f[i].key < k) k = E->f[i].key, best = i;
+        if (E->key[i] < k) k = E->key[i], best = i;
     return best;
 }
 
@@ -159,7 +167,7 @@ static int expand(epa *E, int f0, int iw)
     for (int r = 0; r < nr; ++r) /* simple loops: every rim corner starts exactly one rim edge */
         for (int q = r + 1; q < nr; ++q)
             if (ra[r] == ra[q]) return 0;
-    for (int s = 0; s < nseen; ++s) E->f[seen[s]].live = 0, E->freel[E->nfree++] = seen[s];
+    for (int s = 0; s < nseen; ++s) E->f[seen[s]].live = 0, E->key[seen[s]] = INFINITY, E->freel[E->nfree++] = seen[s];
     int nf[64];
     for (int r = 0; r < nr; ++r) {
         nf[r] = face_new(E, ra[r], rb[r], iw);
@@ -180,18 +188,24 @@ static int expand(epa *E, int f0, int iw)
     return 1;
 }
 
-/* The mesh's degree about the origin: its triangles' signed solid angles (Van Oosterom and
- * Strackee 1983) add up to 4 pi times the number of times it wraps the origin. Every face is at
- * least the bound > 0 away, so each angle is defined; 1 (to within a half turn: the sum's rounding is
- * far smaller) means every direction from the origin meets a face. */
-static int wraps_once(const epa *E)
+/* Every direction from the origin meets a face. So it does when every face is proved
+ * counter-clockwise seen from the origin: the mesh is closed, so its degree about the origin (the
+ * number of faces a ray meets, each counted with its orientation's sign) is the same for every ray,
+ * and all signs are positive. Else its degree from the triangles' signed solid angles (Van Oosterom
+ * and Strackee 1983: they add up to 4 pi times the degree) must be 1 (to within a half turn: the
+ * sum's rounding is far smaller); every face is at least the bound > 0 away, so each angle is
+ * defined. */
+static int covers(const epa *E)
 {
+    int all = 1;
+    for (int i = 0; i < E->nf; ++i) all &= !E->f[i].live || E->f[i].pos;
+    if (all) return 1;
     double sum = 0.0;
     for (int i = 0; i < E->nf; ++i) {
         const epa_face *f = &E->f[i];
         if (!f->live) continue;
         prox_vec3 a = E->p[f->v[0]], b = E->p[f->v[1]], c = E->p[f->v[2]];
-        double la = prox_v3_norm(a), lb = prox_v3_norm(b), lc = prox_v3_norm(c);
+        double la = sqrt(E->p2[f->v[0]]), lb = sqrt(E->p2[f->v[1]]), lc = sqrt(E->p2[f->v[2]]);
         double num = prox_v3_dot(a, prox_v3_cross(b, c));
         double den = la * lb * lc + prox_v3_dot(a, b) * lc + prox_v3_dot(a, c) * lb + prox_v3_dot(b, c) * la;
         sum += 2.0 * atan2(num, den);
@@ -199,11 +213,11 @@ static int wraps_once(const epa *E)
     return fabs(sum - 4.0 * PROX_PI) < PROX_PI;
 }
 
-/* Proved: the bound reaches the upper one and the mesh wraps the origin once. */
+/* Proved: the bound reaches the upper one and the mesh covers every direction. */
 static int proved(const epa *E, prox_epa_result *out, double tol)
 {
     if (!(out->lower >= out->upper - tol)) return 0;
-    if (wraps_once(E)) return 1;
+    if (covers(E)) return 1;
     out->lower = -INFINITY;
     return 0;
 }
@@ -215,14 +229,14 @@ int prox_epa_depth(prox_epa_support fs, void *ctx, const prox_vec3 *v, int nv, c
     E.np = nv, E.nf = 0, E.nfree = 0;
     out->lower = -INFINITY, out->upper = upper, out->dir = dir, out->points = nv;
     if (nv > 12 || nt > 20) return 0;
-    for (int i = 0; i < nv; ++i) E.p[i] = v[i];
+    for (int i = 0; i < nv; ++i) E.p[i] = v[i], E.p2[i] = prox_v3_norm2(v[i]);
     for (int t = 0; t < nt; ++t) face_new(&E, tri[t][0], tri[t][1], tri[t][2]);
-    if (!link_all(&E) || !wraps_once(&E)) { out->points = 0; return 0; } /* folded about the origin */
+    if (!link_all(&E) || !covers(&E)) { out->points = 0; return 0; } /* folded about the origin */
     if (max_points > EPA_MAXV) max_points = EPA_MAXV;
     for (;;) {
         int i = nearest(&E);
         if (i < 0) return 0;
-        out->lower = E.f[i].key - slack;
+        out->lower = E.key[i] - slack;
         if (out->lower >= out->upper - tol) return proved(&E, out, tol);
         if (E.np >= max_points) break;
         prox_vec3 u = E.f[i].u;
@@ -231,8 +245,8 @@ int prox_epa_depth(prox_epa_support fs, void *ctx, const prox_vec3 *v, int nv, c
         prox_vec3 w = fs(ctx, u, &h);
         if (h < out->upper) out->upper = h, out->dir = u;
         if (out->lower >= out->upper - tol) return proved(&E, out, tol);
-        if (!(prox_v3_dot(u, w) > E.f[i].key + slack) || !prox_v3_isfinite(w)) break; /* no point beyond it */
-        E.p[E.np] = w;
+        if (!(prox_v3_dot(u, w) > E.key[i] + slack) || !prox_v3_isfinite(w)) break; /* no point beyond it */
+        E.p[E.np] = w, E.p2[E.np] = prox_v3_norm2(w);
         if (!expand(&E, i, E.np++)) break;
         out->points = E.np;
     }

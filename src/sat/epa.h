@@ -3,8 +3,9 @@
  * certificate; docs/algorithms/convex_engine.md).
  *
  * P = A - B contains the origin; its depth is min over unit D of h_P(D). Points of P (support
- * points) joined by a closed mesh of triangles that wraps the origin once (its triangles' signed
- * solid angles add up to 4 pi) meet every ray from the origin, and the point where a ray meets a
+ * points) joined by a closed mesh of triangles that wraps the origin (every triangle seen
+ * counter-clockwise from it, or their signed solid angles adding up to 4 pi) meet every ray from the
+ * origin, and the point where a ray meets a
  * triangle is in P (a convex combination) and no nearer than the triangle's distance from the
  * origin. So the ball of radius min_f dist(0, f) lies in P: a lower bound on the depth. No convexity
  * or orientation of the triangles is needed, and each triangle's distance is bounded below by weak
@@ -29,7 +30,7 @@ typedef struct prox_epa_result {
 
 /* Starts from the points v[0..nv-1] (support points of P, nv <= 12) joined by the closed mesh of
  * triangles tri[0..nt-1] (nt <= 20, counter-clockwise seen from outside; one that does not wrap the
- * origin once returns 0 at once, out->points = 0) and refines until lower >=
+ * origin returns 0 at once, out->points = 0) and refines until lower >=
  * upper - tol, upper starting at the caller's upper (with its direction dir). slack: how far a
  * computed support point may lie from P (rounding), subtracted from the bound. Returns 1 when proved
  * (out->lower the bound), 0 when max_points was reached or the mesh could not be continued (no point
