@@ -415,6 +415,32 @@ static void test_fuzz_flat_rec_speck(void **state)
     assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-9 * S);
 }
 
+/* fuzz/crashes/pairs-flat-ell-box-*: a flat oblate ELL (semi-axis 1.7e-52 along its axis, radius
+ * 1.09e-42) pierced by a thin bar BOX along its axis, 6.7e-6 S deep. The depth's normal is the axis
+ * tilted by 1.6e-15 rad, where the ellipsoid's support point sits over the bar's end; the value of
+ * phi differs from the axis's by 1e-20 S, so only the final Newton polish finds it, and the
+ * ellipsoid's Hessian, formed as b^2 I + (a^2 - b^2) w w^T, lost a^2 and was 0 at the pole: p1
+ * stayed at the pole, 5.1e-6 S off p2 - sd normal. M is applied by parts. */
+static void test_fuzz_flat_ell_box(void **state)
+{
+    (void)state;
+    prox_shape a = prox_shape_from_ell((prox_ell){prox_v3(1.4501617399449796e-47, 3.2526678336448472e-86, 5.8798602676585853e-62),
+                                                   prox_v3(1.6933980572287468e-52, 1.6578004078054256e-76, 2.6385770341584165e-308),
+                                                   1.0860413422903723e-42});
+    prox_box x = {prox_v3(7.0020766345018471e-77, 1.8322197603314477e-76, 1.1081806845832649e-47),
+                  {prox_v3(8.1523834493454327e-43, 1.2444927247846713e-47, 1.2831293658215027e-153),
+                   prox_v3(3.5391017144799187e-57, -2.3183852293721245e-52, 1.7317746548165821e-153),
+                   prox_v3(2.7629558064904835e-158, -1.8099233395719769e-153, -2.4230055140642997e-52)}};
+    prox_shape b = prox_shape_from_box(x);
+    assert_int_equal(prox_shape_validate(&a), PROX_OK);
+    assert_int_equal(prox_shape_validate(&b), PROX_OK);
+    double S = prox_shape_pair_scale(&a, &b);
+    prox_signed_result r = prox_shape_signed_distance(&a, &b);
+    assert_int_equal(r.status, PROX_OK);
+    assert_true(r.sd < 0.0);
+    assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-9 * S);
+}
+
 /* fuzz/crashes/pairs-box-rcc-unit-normal-*: a box and a cylinder 1.8e-43 apart at scale 4.9e-33
  * (4e-11 S): the signed distance's normal, (p2 - p1) divided by the distance, came out 1.03 long (the
  * distance and |p2 - p1| differ by rounding of S). It is normalised by |p2 - p1|. */
@@ -538,6 +564,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_thin_box_arb),
         cmocka_unit_test(test_fuzz_flat_cone_needle),
         cmocka_unit_test(test_fuzz_flat_rec_speck),
+        cmocka_unit_test(test_fuzz_flat_ell_box),
         cmocka_unit_test(test_fuzz_axis_support_point),
         cmocka_unit_test(test_fuzz_ell_subnormal_axis),
     };

@@ -142,12 +142,14 @@ static prox_vec3 hc_hess(const prox_body *b, prox_vec3 d, prox_vec3 v)
         prox_vec3 mv = prox_v3_add(prox_v3_scale(k->u1, s1 * prox_v3_dot(v, k->u1)), prox_v3_scale(k->u2, s2 * prox_v3_dot(v, k->u2)));
         return sqrt_form_hess(md, mv, sqrt(prox_v3_dot(d, md)), v);
     }
-    case PROX_BODY_ELL: {
+    case PROX_BODY_ELL: { /* M = a^2 w w^T + b^2 (I - w w^T), applied by parts: as b^2 I + (a^2 - b^2) w w^T
+                           * it loses a^2 below eps b^2 (a flat ellipsoid at its pole: d.Md of 0) */
         const prox_ellb *k = &b->x.ell;
-        double b2 = k->b * k->b, e = k->a * k->a - b2;
-        prox_vec3 md = prox_v3_mad(prox_v3_scale(d, b2), e * prox_v3_dot(d, k->w), k->w);
-        prox_vec3 mv = prox_v3_mad(prox_v3_scale(v, b2), e * prox_v3_dot(v, k->w), k->w);
-        return sqrt_form_hess(md, mv, sqrt(prox_v3_dot(d, md)), v);
+        double a2 = k->a * k->a, b2 = k->b * k->b, dw = prox_v3_dot(d, k->w);
+        prox_vec3 dp = prox_v3_reject(d, k->w);
+        prox_vec3 md = prox_v3_mad(prox_v3_scale(dp, b2), a2 * dw, k->w);
+        prox_vec3 mv = prox_v3_mad(prox_v3_scale(prox_v3_reject(v, k->w), b2), a2 * prox_v3_dot(v, k->w), k->w);
+        return sqrt_form_hess(md, mv, prox_hypot2(k->a * dw, k->b * prox_v3_norm(dp)), v);
     }
     default: return prox_v3(0, 0, 0);
     }
