@@ -26,6 +26,9 @@
  * D_c (h_P is convex and g.D <= h_P(D)), and phi >= the sum of each body's exact minimum over the
  * cap (hc of a sphere, ellipsoid, cylinder and cone is a function of D.w alone); Newton and the local
  * kinks run once more from the best direction the cover left (it can be a non-stationary cell centre).
+ * Before the global search an overlap tries a quick one (the best of a few starts, Newton and the
+ * kinks near it) proved by an inner polytope of P (epa.h: a closed mesh of support points around the
+ * origin, whose nearest triangle bounds the depth from below) or by tangent balls at the witnesses.
  * The distance query first tries cheap certificates (GJK's simplex pair; Newton and the support sets
  * at its best direction), each accepted only when -phi along the pair's own direction meets it. */
 #include "convex.h"

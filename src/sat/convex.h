@@ -17,8 +17,9 @@
 /* What an answer proved (caller's units). Disjoint: lower = the best -phi(D) (a proven lower bound
  * on the distance), upper = |p2 - p1| (an achieved pair); certified when upper - lower <=
  * PROX_TOL_CERT x S. Overlapping: upper = the depth reported (phi at the normal: a separating move of
- * that length exists), lower = a lower bound on the depth proved by covering the sphere of directions
- * (a cap's bound from the convexity of h and each body's exact minimum over the cap); certified when
+ * that length exists), lower = a lower bound on the depth proved by an inner polytope of A - B
+ * (epa.h), by tangent balls at the witnesses, or by covering the sphere of directions (a cap's bound
+ * from the convexity of h and each body's exact minimum over the cap); certified when
  * upper - lower <= PROX_TOL_DEPTH_CERT x S. The distance query's overlap answer is certified when its
  * common point lies in both solids within PROX_TOL_TOUCH x S; lower = upper = 0 then. */
 typedef struct prox_convex_info {
@@ -45,9 +46,9 @@ prox_signed_result prox_convex_signed(const prox_body *a, const prox_body *b);
 prox_signed_result prox_convex_signed_ex(const prox_body *a, const prox_body *b, prox_convex_info *info);
 prox_distance_result prox_convex_distance_ex(const prox_body *a, const prox_body *b, prox_convex_info *info);
 
-/* The same without the early exits (GJK's and Newton's certificates of a disjoint pair, the
- * tangent balls of a shallow depth): the full search and its certificate, the reference the tests
- * hold the early exits to. */
+/* The same without the early exits (GJK's and Newton's certificates of a disjoint pair; the
+ * depth's quick search, proved by an inner polytope (epa.h) or by tangent balls): the full search
+ * and its certificate, the reference the tests hold the early exits to. */
 prox_distance_result prox_convex_distance_full(const prox_body *a, const prox_body *b, prox_convex_info *info);
 prox_signed_result prox_convex_signed_full(const prox_body *a, const prox_body *b, prox_convex_info *info);
 
@@ -56,7 +57,7 @@ unsigned long prox_convex_gjk_certified_count(void);
 
 /* How many times the slow global search has run since the start of the process (all threads): the
  * disjoint search's sweep of every kink circle when the local search could not certify (rare), and
- * the cover of the sphere that certifies a depth (every overlapping signed distance). */
+ * the cover of the sphere that certifies a depth the quick search did not prove. */
 unsigned long prox_convex_global_count(void);
 
 #endif
