@@ -329,11 +329,12 @@ static void test_fuzz_rhp_lean_needle(void **state)
 }
 
 /* fuzz/crashes/pairs-thin-box-arb-*: an ARB tetrahedron 5e-33 across against a BOX with edges of
- * 3.3e-33, 6.9e-62 and 7.5e-67, overlapping by 3.2e-7 S. A BOX has no aspect limit, but its polytope,
- * taken relative to its centroid, lost the two thin edges to rounding (a segment with face planes
- * through it), and the polytope solver's witnesses missed p2 - p1 = sd normal by 3.3e-6 S. Such a
- * box goes to the support-function method, whose box support is exact; the same box with its thin
- * edges 5e8 and 4e8 times shorter than the long one stays with the polytope solver and holds too. */
+ * 3.3e-33, 6.9e-62 and 7.5e-67 (two thin edges: a needle), overlapping by 3.2e-7 S. A BOX has no
+ * aspect limit, but its polytope, taken relative to its centroid, lost both thin edges to rounding
+ * (a segment with face planes through it), and the polytope solver's witnesses missed
+ * p2 - p1 = sd normal by 3.3e-6 S. Such a box goes to the support-function method, whose box
+ * support is exact; the same box with its thin edges 5e8 and 4e8 times shorter than the long one
+ * stays with the polytope solver and holds too. */
 static void test_fuzz_thin_box_arb(void **state)
 {
     (void)state;
@@ -361,6 +362,27 @@ static void test_fuzz_thin_box_arb(void **state)
         assert_true(d.intersect);
         x.edge[1] = prox_v3_scale(x.edge[1], 1e20), x.edge[2] = prox_v3_scale(x.edge[2], 1e25);
     }
+    /* fuzz/crashes/pairs-plate-box-arb-*: a plate BOX (edges 2.5e-91, 6.9e-33, 7.3e-43: one thin edge)
+     * touching a face of an ARB tetrahedron stays with the polytope solver, whose witnesses meet at
+     * sd = 0 (the support-function method's were 6.4e-9 S apart). */
+    prox_arb t2 = {{prox_v3(0, 2.381983181597897e-38, 7.271344439915647e-43),
+                    prox_v3(2.6314121737938698e-52, 3.852025654882619e-34, 4.9141350922803505e-62),
+                    prox_v3(5.6492516482548959e-38, 2.829180334625324e-77, 6.9901110068883757e-77),
+                    prox_v3(1.65021493253019e-153, 6.3522996091262562e-67, 6.2335817748096524e-38),
+                    prox_v3(0, 0, 0), prox_v3(0, 0, 0), prox_v3(0, 0, 0), prox_v3(0, 0, 0)},
+                   {1230, 1240, 1340, 2340, 0, 0}};
+    prox_box plate = {prox_v3(6.9901110068883757e-77, 1.65021493253019e-153, 6.3522996091262562e-67),
+                      {prox_v3(1.7219425775536767e-259, 1.2027122125173386e-153, 2.4845848270902153e-91),
+                       prox_v3(4.857875059588523e-33, 4.8578750597241048e-33, 0),
+                       prox_v3(-5.1366675560706209e-43, 5.1366675559272578e-43, -2.4865050827789592e-105)}};
+    prox_shape a = prox_shape_from_arb(t2), b = prox_shape_from_box(plate);
+    assert_int_equal(prox_shape_validate(&a), PROX_OK);
+    assert_int_equal(prox_shape_validate(&b), PROX_OK);
+    double S = prox_shape_pair_scale(&a, &b);
+    prox_signed_result r = prox_shape_signed_distance(&a, &b);
+    assert_int_equal(r.status, PROX_OK);
+    assert_true(fabs(r.sd) <= 1e-12 * S);
+    assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-12 * S);
 }
 
 /* fuzz/crashes/pairs-flat-cone-needle-*: a TRC 1e-42 high with radii 2.5e-91 and 4.2e-33 (a cone so

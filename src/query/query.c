@@ -51,11 +51,11 @@ static route route_of(prox_shape_kind ka, prox_shape_kind kb)
     return ROUTE_CONVEX;
 }
 
-/* A BOX or RPP (no aspect limit, shapes.h) whose polytope keeps its shape: every edge at least
- * 1/PROX_MAX_ASPECT of the longest, as the added polytopes' widths are. Relative to its centroid a
- * thinner box's corners lose the thin edges to rounding (a 7e-67 edge beside a 3e-33 one leaves a
- * segment), so such a box goes to the support-function method, which takes its edges and half
- * extents exactly. */
+/* A BOX or RPP (no aspect limit, shapes.h) whose polytope keeps its shape: at most one edge shorter
+ * than 1/PROX_MAX_ASPECT of the longest. Relative to its centroid a box with two such edges loses
+ * both to rounding (a 7e-67 and a 7e-62 edge beside a 3e-33 one leave a segment, with face planes
+ * through it), so it goes to the support-function method, which takes its edges and half extents
+ * exactly; a plate (one such edge) stays a consistent flat polytope. */
 static int poly_fits(const prox_shape *s)
 {
     double l[3];
@@ -67,8 +67,10 @@ static int poly_fits(const prox_shape *s)
     } else {
         return 1;
     }
-    double lo = fmin(l[0], fmin(l[1], l[2])), hi = fmax(l[0], fmax(l[1], l[2]));
-    return !(lo * PROX_MAX_ASPECT < hi); /* NaN sizes pass on to the validator */
+    double hi = fmax(l[0], fmax(l[1], l[2]));
+    int thin = 0;
+    for (int i = 0; i < 3; ++i) thin += l[i] * PROX_MAX_ASPECT < hi; /* NaN sizes pass on to the validator */
+    return thin < 2;
 }
 
 /* The route of a pair of shapes: a polytope pair with a box too thin for its polytope goes to the

@@ -1440,8 +1440,8 @@ static prox_vec3 epa_support(void *ctx, prox_vec3 d, double *h)
 {
     cvx *s = ctx;
     prox_vec3 g = phi_grad(s, d);
-    *h = prox_v3_dot(g, d);
-    record(s, d, phi_eval(s, d));
+    *h = prox_v3_dot(g, d); /* phi(d) from its support point (the answer re-evaluates its candidates) */
+    record(s, d, *h);
     return g;
 }
 
