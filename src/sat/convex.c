@@ -535,71 +535,112 @@ static prox_vec3 face_foot(const gjk_pt *p, int m)
     return prox_v3_scale(nrm, prox_v3_dot(p[0].w, nrm) / prox_v3_norm2(nrm));
 }
 
-/* Closest point v to the origin of the hull of the n <= 4 points (Johnson's subalgorithm by
- * enumeration of the faces: the nearest affine projection with positive barycentric coordinates);
- * the points are reduced to that face and lam receives its coordinates. Returns 1 when the origin is
- * inside the tetrahedron. */
+/* The point of segment ab nearest the origin: its barycentric coordinates (la, lb). */
+static void seg_bary(prox_vec3 a, prox_vec3 b, double *la, double *lb)
+{
+    prox_vec3 e = prox_v3_sub(b, a);
+    double t = -prox_v3_dot(a, e), ee = prox_v3_norm2(e);
+    if (!(t > 0.0) || !(ee > 0.0)) *la = 1.0, *lb = 0.0;
+    else if (t >= ee) *la = 0.0, *lb = 1.0;
+    else *lb = t / ee, *la = 1.0 - *lb;
+}
+
+/* The point of triangle abc nearest the origin by its Voronoi regions (Ericson, Real-Time Collision
+ * Detection, 5.1.5): barycentric coordinates l[0..2]. A triangle whose face region has no area
+ * (collinear corners) takes the nearest of its sides. */
+static void tri_bary(prox_vec3 a, prox_vec3 b, prox_vec3 c, double l[3])
+{
+    prox_vec3 ab = prox_v3_sub(b, a), ac = prox_v3_sub(c, a);
+    double d1 = -prox_v3_dot(ab, a), d2 = -prox_v3_dot(ac, a);
+    l[0] = 1.0, l[1] = l[2] = 0.0;
+    if (d1 <= 0.0 && d2 <= 0.0) return;
+    double d3 = -prox_v3_dot(ab, b), d4 = -prox_v3_dot(ac, b);
+    if (d3 >= 0.0 && d4 <= d3) { l[0] = 0.0, l[1] = 1.0; return; }
+    double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) { l[1] = d1 / (d1 - d3), l[0] = 1.0 - l[1]; return; }
+    double d5 = -prox_v3_dot(ab, c), d6 = -prox_v3_dot(ac, c);
+    if (d6 >= 0.0 && d5 <= d6) { l[0] = 0.0, l[2] = 1.0; return; }
+    double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) { l[2] = d2 / (d2 - d6), l[0] = 1.0 - l[2]; return; }
+    double va = d3 * d6 - d5 * d4;
+    if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
+        l[0] = 0.0, l[2] = (d4 - d3) / ((d4 - d3) + (d5 - d6)), l[1] = 1.0 - l[2];
+        return;
+    }
+    double den = va + vb + vc;
+    if (den > 0.0 && va >= 0.0 && vb >= 0.0 && vc >= 0.0) {
+        l[1] = vb / den, l[2] = vc / den, l[0] = 1.0 - l[1] - l[2];
+        return;
+    }
+    /* no face region to rounding: the nearest side */
+    prox_vec3 q[3] = {a, b, c};
+    double best = INFINITY;
+    for (int i = 0; i < 3; ++i) {
+        int j = (i + 1) % 3;
+        double x, y;
+        seg_bary(q[i], q[j], &x, &y);
+        double dd = prox_v3_norm2(prox_v3_add(prox_v3_scale(q[i], x), prox_v3_scale(q[j], y)));
+        if (dd < best) best = dd, l[0] = l[1] = l[2] = 0.0, l[i] = x, l[j] = y;
+    }
+}
+
+/* Closest point v to the origin of the hull of the n <= 4 points (the distance subalgorithm by
+ * Voronoi regions: a tetrahedron's faces that have the origin outside, each triangle's vertex, edge
+ * and face regions); the points are reduced to those with a positive coordinate and lam receives
+ * them. Returns 1 when the origin is inside the tetrahedron. Four points nearly in a plane (support
+ * points on a flat face of P) never enclose it: their hull is covered by its triangles. */
 static int gjk_closest(gjk_pt p[4], int *n, prox_vec3 *v, double lam[4])
 {
-    double best = INFINITY, bl[4] = {1, 0, 0, 0};
-    int best_mask = 1, inside = 0, last = 1 << (*n - 1);
-    /* the faces holding the newest point first: the closest point of the new hull lies on one of them
-     * when it is closer than the old simplex's (GJK's progress), so the others are looked at only when
-     * rounding leaves none of those valid */
-    for (int pass = 0; pass < 2 && best == INFINITY && !inside; ++pass)
-    for (int mask = 1; mask < (1 << *n); ++mask) {
-        if ((!(mask & last)) != pass) continue;
-        prox_vec3 q[4], e[3];
-        int m = 0;
-        for (int i = 0; i < *n; ++i)
-            if (mask >> i & 1) q[m++] = p[i].w;
-        double G[3][3], rhs[3], mu[3] = {0, 0, 0}; /* only the m - 1 rows and columns in use are set */
-        for (int i = 1; i < m; ++i) e[i - 1] = prox_v3_sub(q[i], q[0]);
-        for (int i = 0; i < m - 1; ++i) {
-            for (int j = 0; j < m - 1; ++j) G[i][j] = prox_v3_dot(e[i], e[j]);
-            rhs[i] = -prox_v3_dot(e[i], q[0]);
-        }
-        int ok = 1;
-        for (int c = 0; c < m - 1 && ok; ++c) {
-            if (!(G[c][c] > 1e-24 * (G[0][0] + 1e-300))) ok = 0;
-            for (int r = c + 1; r < m - 1 && ok; ++r) {
-                double f = G[r][c] / G[c][c];
-                for (int k = c; k < m - 1; ++k) G[r][k] -= f * G[c][k];
-                rhs[r] -= f * rhs[c];
+    double l[4] = {1, 0, 0, 0};
+    int inside = 0;
+    if (*n == 2) {
+        seg_bary(p[0].w, p[1].w, &l[0], &l[1]);
+    } else if (*n == 3) {
+        tri_bary(p[0].w, p[1].w, p[2].w, l);
+    } else if (*n == 4) {
+        static const int fc[4][4] = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {1, 3, 2, 0}}; /* face, opposite */
+        prox_vec3 e0 = prox_v3_sub(p[1].w, p[0].w), e1 = prox_v3_sub(p[2].w, p[0].w), e2 = prox_v3_sub(p[3].w, p[0].w);
+        double vol = fabs(prox_v3_dot(e0, prox_v3_cross(e1, e2)));
+        int solid = vol > 1e-10 * prox_v3_norm(e0) * prox_v3_norm(e1) * prox_v3_norm(e2), any = 0;
+        double best = INFINITY;
+        for (int f = 0; f < 4; ++f) {
+            prox_vec3 a = p[fc[f][0]].w, b = p[fc[f][1]].w, c = p[fc[f][2]].w, o = p[fc[f][3]].w;
+            prox_vec3 nf = prox_v3_cross(prox_v3_sub(b, a), prox_v3_sub(c, a));
+            double so = -prox_v3_dot(nf, a), sd = prox_v3_dot(nf, prox_v3_sub(o, a));
+            if (solid && !(so * sd < 0.0)) continue; /* the origin on the inner side of this face */
+            any = 1;
+            double t[3];
+            tri_bary(a, b, c, t);
+            prox_vec3 x = prox_v3_add(prox_v3_add(prox_v3_scale(a, t[0]), prox_v3_scale(b, t[1])), prox_v3_scale(c, t[2]));
+            double xx = prox_v3_norm2(x);
+            if (xx < best) {
+                best = xx, l[0] = l[1] = l[2] = l[3] = 0.0;
+                for (int k = 0; k < 3; ++k) l[fc[f][k]] = t[k];
             }
         }
-        /* four points nearly in a plane (support points on a flat face of P): their hull is covered
-         * by its triangles, and the barycentric solve would be rounding noise */
-        if (ok && m == 4) {
-            double vol = fabs(prox_v3_dot(e[0], prox_v3_cross(e[1], e[2])));
-            ok = vol > 1e-10 * prox_v3_norm(e[0]) * prox_v3_norm(e[1]) * prox_v3_norm(e[2]);
+        if (!any) {
+            /* the origin inside: its barycentric coordinates, for the simplex pair (a common point) */
+            prox_vec3 q = prox_v3_neg(p[0].w); /* e0 l1 + e1 l2 + e2 l3 = -p0, by Cramer's rule */
+            double six = prox_v3_dot(e0, prox_v3_cross(e1, e2));
+            l[1] = prox_v3_dot(q, prox_v3_cross(e1, e2)) / six;
+            l[2] = prox_v3_dot(e0, prox_v3_cross(q, e2)) / six;
+            l[3] = prox_v3_dot(e0, prox_v3_cross(e1, q)) / six;
+            l[0] = 1.0 - l[1] - l[2] - l[3];
+            inside = 1;
         }
-        if (!ok) continue;
-        for (int c = m - 2; c >= 0; --c) {
-            double t = rhs[c];
-            for (int k = c + 1; k < m - 1; ++k) t -= G[c][k] * mu[k];
-            mu[c] = t / G[c][c];
-        }
-        double l0 = 1.0;
-        int pos = 1;
-        for (int i = 0; i < m - 1; ++i) l0 -= mu[i], pos &= mu[i] > 0.0;
-        if (!(pos && l0 > 0.0)) continue;
-        prox_vec3 x = q[0];
-        for (int i = 0; i < m - 1; ++i) x = prox_v3_mad(x, mu[i], e[i]);
-        double xx = m == 4 ? 0.0 : prox_v3_norm2(x);
-        if (xx < best) {
-            best = xx, best_mask = mask, *v = x, bl[0] = l0;
-            for (int i = 0; i < m - 1; ++i) bl[i + 1] = mu[i];
-            inside = m == 4;
-        }
-        if (inside) break;
     }
     int m = 0;
+    if (inside) {
+        for (int i = 0; i < 4; ++i) lam[i] = l[i];
+        *v = prox_v3(0, 0, 0);
+        return 1;
+    }
     for (int i = 0; i < *n; ++i)
-        if (best_mask >> i & 1) p[m] = p[i], lam[m] = bl[m], ++m;
+        if (l[i] > 0.0) p[m] = p[i], lam[m] = l[i], ++m;
+    if (m == 0) lam[0] = 1.0, m = 1; /* not reached: some coordinate is positive */
     *n = m;
-    if (!inside) *v = face_foot(p, m);
-    return inside;
+    *v = face_foot(p, m);
+    return 0;
 }
 
 typedef struct gjk_out {
