@@ -7,7 +7,8 @@
  * and the early answer's witnesses must lie in the solids with |p2 - p1| = distance and its proven
  * lower bound within PROX_TOL_CERT S of it. The early exits must be taken for most disjoint pairs.
  * The signed query likewise (prox_convex_signed_full: no early exit, the depth proved by the cover),
- * with shallow overlaps whose depth the tangent balls at the witnesses prove. */
+ * whose overlaps the quick search proves (an inner polytope of A - B, epa.h, or tangent balls at the
+ * witnesses): each proven lower bound must stay below the other search's depth. */
 #include "test_util.h"
 
 #include <float.h>
@@ -182,12 +183,12 @@ static void run_family(int fam, int per_kind, uint64_t seed)
 }
 
 typedef struct sstats {
-    int pairs, overlapping, balls, disjoint, early;
+    int pairs, overlapping, quick, disjoint, early;
     double err_sd;
 } sstats;
 
-/* The signed query with its early exits (the distance's certificates for a disjoint pair, the tangent
- * balls for a shallow depth) against the full search and its cover on one pair: the same answer
+/* The signed query with its early exits (the distance's certificates for a disjoint pair, the quick
+ * search's proofs of a depth) against the full search and its cover on one pair: the same answer
  * (1e-12 S disjoint, 1e-9 S overlapping), each one's proven bound on the other's side, witnesses with
  * p2 - p1 = sd n. */
 static void check_signed_pair(const prox_shape *sa, const prox_shape *sb, sstats *st)
@@ -211,7 +212,7 @@ static void check_signed_pair(const prox_shape *sa, const prox_shape *sb, sstats
     assert_true(prox_v3_norm(prox_v3_mad(prox_v3_sub(f.p2, f.p1), -f.sd, f.normal)) <= bar);
     if (fi.intersect) {
         st->overlapping++;
-        st->balls += !fi.global;
+        st->quick += !fi.global;
         /* both proofs: each lower bound of the depth at most the other's depth */
         /* a sphere's depth is answered in closed form by the queries: against a cone tip the cover
          * can run out of cells (both searches then say so) */
@@ -227,7 +228,7 @@ static void check_signed_pair(const prox_shape *sa, const prox_shape *sb, sstats
 }
 
 /* Overlapping pairs by depth: B moved along the full engine's normal to a depth of 1e-4 .. 0.1 S
- * (shallow: the tangent balls prove most of them) or left where the near family puts it. */
+ * (shallow) or left where the near family puts it; the quick search proves most of either. */
 static void run_signed(int shallow, int per_kind, uint64_t seed)
 {
     test_rng g = test_rng_seed(seed);
@@ -246,13 +247,13 @@ static void run_signed(int shallow, int per_kind, uint64_t seed)
                 }
                 check_signed_pair(&a, &b, &st);
             }
-    printf("signed %-8s pairs %4d overlapping %4d (by the balls %4d) disjoint %4d (early %4d)  max |sd - full|/S %.2g\n",
-           shallow ? "shallow" : "near", st.pairs, st.overlapping, st.balls, st.disjoint, st.early, st.err_sd);
+    printf("signed %-8s pairs %4d overlapping %4d (proved by the quick search %4d) disjoint %4d (early %4d)  max |sd - full|/S %.2g\n",
+           shallow ? "shallow" : "near", st.pairs, st.overlapping, st.quick, st.disjoint, st.early, st.err_sd);
     assert_true(st.overlapping > 0);
-    /* what the early exits are for: most shallow depths proved by the balls, most disjoint pairs
-     * by the distance's certificates */
-    if (shallow) assert_true(st.balls * 2 > st.overlapping);
-    else assert_true(st.early * 2 > st.disjoint);
+    /* what the early exits are for: most depths proved by the quick search, most disjoint pairs by
+     * the distance's certificates */
+    assert_true(st.quick * 2 > st.overlapping);
+    if (!shallow) assert_true(st.early * 2 > st.disjoint);
 }
 
 static void test_signed_near(void **state)
