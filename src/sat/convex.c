@@ -1520,7 +1520,9 @@ static int depth_quick(cvx *s, const gjk_out *go, prox_signed_result *r, prox_co
     for (int i = 0; i < 12; ++i) consider(s, ico_vertex(i));
     double lower = -INFINITY;
     int epa = s->nk > 0 && s->best_phi > 0.0 && epa_proves(s, go, &lower);
+    s->halvings = epa ? CVX_GRAD_HALVINGS : s->halvings; /* after the proof: a step that needs more has met a kink */
     descend_within(s, epa ? CVX_EPA_LOCAL : CVX_LOCAL);
+    s->halvings = 30;
     if (!(s->best_phi > 0.0)) return 0;
     finish_overlap(s, r);
     if (!epa && ball_certified(s, r, info)) return 1;
