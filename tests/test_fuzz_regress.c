@@ -463,6 +463,26 @@ static void test_fuzz_flat_ell_box(void **state)
     assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-9 * S);
 }
 
+/* fuzz/crashes/pairs-tall-rec-wedge-*: an REC 131072 high with semi-axes 1.5 and 0.7 against a unit
+ * wedge at its side, 0.2998 deep. The inner polytope proves the depth within 1e-10 S, which is 1.3e-5
+ * here (the pair's scale is the REC's height): its best direction lay 9e-3 rad from the optimum (the
+ * wedge's face normal), outside the 1e-3 rad the descent searched, and the witnesses missed the normal
+ * by 1.9e-9 S with a depth 1.1e-6 too large. Such an answer takes the wider search once. */
+static void test_fuzz_tall_rec_wedge(void **state)
+{
+    (void)state;
+    prox_shape a = prox_shape_from_rec((prox_rec){prox_v3(0, 0, 0), prox_v3(0, 4.7783097267364807e-299, 131071.998046875),
+                                                  prox_v3(1.5, 0, 0), prox_v3(0, 0.7, -2.5518927448709041e-304)});
+    prox_shape b = prox_shape_from_wed((prox_wed){prox_v3(1.200244140625, 0, 0), prox_v3(1, 0, 0), prox_v3(0, 1, 0), prox_v3(0, 0, 1)});
+    assert_int_equal(prox_shape_validate(&a), PROX_OK);
+    assert_int_equal(prox_shape_validate(&b), PROX_OK);
+    double S = prox_shape_pair_scale(&a, &b);
+    prox_signed_result r = prox_shape_signed_distance(&a, &b);
+    assert_int_equal(r.status, PROX_OK);
+    assert_true(fabs(r.sd + (1.5 - 1.200244140625)) <= 1e-12 * S);
+    assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-12 * S);
+}
+
 /* fuzz/crashes/pairs-box-rcc-unit-normal-*: a box and a cylinder 1.8e-43 apart at scale 4.9e-33
  * (4e-11 S): the signed distance's normal, (p2 - p1) divided by the distance, came out 1.03 long (the
  * distance and |p2 - p1| differ by rounding of S). It is normalised by |p2 - p1|. */
@@ -587,6 +607,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_flat_cone_needle),
         cmocka_unit_test(test_fuzz_flat_rec_speck),
         cmocka_unit_test(test_fuzz_flat_ell_box),
+        cmocka_unit_test(test_fuzz_tall_rec_wedge),
         cmocka_unit_test(test_fuzz_axis_support_point),
         cmocka_unit_test(test_fuzz_ell_subnormal_axis),
     };
