@@ -483,6 +483,31 @@ static void test_fuzz_tall_rec_wedge(void **state)
     assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-12 * S);
 }
 
+/* fuzz/crashes/pairs-needle-ell-plate-*: a needle ELL (semi-axis 1.25e-47, radius 2.9e-57) through a
+ * square plate BOX 3.6e-57 across, 1.2e-10 S deep. The normal must be perpendicular to the needle to
+ * 1e-19 (its support point moves 2e9 S per rad along the axis); the Newton polish's 2 x 2 Hessian has
+ * that stiff direction beside a nearly flat one, its determinant was rounding and the step was
+ * rejected: p1 stood 2.2e-7 S along the needle. The step goes along the stiff eigenvector alone. */
+static void test_fuzz_needle_ell_plate(void **state)
+{
+    (void)state;
+    prox_shape a = prox_shape_from_ell((prox_ell){prox_v3(1.3906711615670009e-309, 3.4766779039554464e-310, 9.7304506985833561e-72),
+                                                   prox_v3(1.1123791639185887e-74, 2.3181975655773565e-52, 1.2469013329346409e-47),
+                                                   2.8963084203486748e-57});
+    prox_box x = {prox_v3(3.5400537317841486e-62, 1.3980432861758759e-76, 1.3980432860952889e-76),
+                  {prox_v3(1.1963084534858382e-153, 1.2027122125173386e-153, 2.4869818447791177e-91),
+                   prox_v3(2.4052551140642279e-57, 2.7432344851520733e-57, 0),
+                   prox_v3(-2.777625635117845e-57, 2.4354091128497663e-57, 1.5834484125274852e-120)}};
+    prox_shape b = prox_shape_from_box(x);
+    assert_int_equal(prox_shape_validate(&a), PROX_OK);
+    assert_int_equal(prox_shape_validate(&b), PROX_OK);
+    double S = prox_shape_pair_scale(&a, &b);
+    prox_signed_result r = prox_shape_signed_distance(&a, &b);
+    assert_int_equal(r.status, PROX_OK);
+    assert_true(r.sd < 0.0);
+    assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-9 * S);
+}
+
 /* fuzz/crashes/pairs-box-rcc-unit-normal-*: a box and a cylinder 1.8e-43 apart at scale 4.9e-33
  * (4e-11 S): the signed distance's normal, (p2 - p1) divided by the distance, came out 1.03 long (the
  * distance and |p2 - p1| differ by rounding of S). It is normalised by |p2 - p1|. */
@@ -608,6 +633,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_flat_rec_speck),
         cmocka_unit_test(test_fuzz_flat_ell_box),
         cmocka_unit_test(test_fuzz_tall_rec_wedge),
+        cmocka_unit_test(test_fuzz_needle_ell_plate),
         cmocka_unit_test(test_fuzz_axis_support_point),
         cmocka_unit_test(test_fuzz_ell_subnormal_axis),
     };

@@ -501,8 +501,19 @@ static prox_vec3 polish_cell(const cvx *s, prox_vec3 d)
          * the gradient vanishes too, the shift only keeps the solve defined) */
         double mu = PROX_TOL_SEARCH * s->S;
         double a = prox_v3_dot(t1, h1) - f + mu, b = prox_v3_dot(t1, h2), c = prox_v3_dot(t2, h2) - f + mu, det = a * c - b * b;
-        if (!(a > 0.0 && det > 0.0)) break;
-        double x1 = -(c * g1 - b * g2) / det, x2 = -(a * g2 - b * g1) / det;
+        double l1 = 0.5 * (a + c) + prox_hypot2(0.5 * (a - c), b), x1, x2;
+        if (l1 > 0.0 && !(det > 1e-12 * l1 * l1)) {
+            /* one stiff direction (a needle's axis: 2e9 S per rad) beside a nearly flat one: the
+             * determinant, which carries eps l1^2 of rounding, is noise, and so is the 2 x 2 solve;
+             * the step along the stiff eigenvector alone */
+            double e1 = a >= c ? l1 - c : b, e2 = a >= c ? b : l1 - a, en = prox_hypot2(e1, e2);
+            if (!(en > 0.0)) break;
+            double t = -(g1 * e1 + g2 * e2) / (en * en * l1);
+            x1 = t * e1, x2 = t * e2;
+        } else {
+            if (!(a > 0.0 && det > 0.0)) break;
+            x1 = -(c * g1 - b * g2) / det, x2 = -(a * g2 - b * g1) / det;
+        }
         if (!(prox_hypot2(x1, x2) < 0.1)) break;
         prox_vec3 dn = unit(prox_v3_add(d, prox_v3_add(prox_v3_scale(t1, x1), prox_v3_scale(t2, x2))));
         double gnn = tgrad(s, dn);
