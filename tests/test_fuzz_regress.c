@@ -508,6 +508,30 @@ static void test_fuzz_needle_ell_plate(void **state)
     assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-9 * S);
 }
 
+/* fuzz/crashes/pairs-disk-ell-needle-*: a flat ELL (a disk 1.5e-47 thick, radius 6.8e-38) crossed by
+ * a needle RCC (radius 3.3e-86) tilted 2.3e-10 rad from the disk's axis. The depth is the disk's
+ * thickness along its axis; the search stopped at the needle's end-face normal, 2.3e-10 rad off,
+ * where the disk's support point lies on its rim (p1 0.36 S off p2 - sd normal, the depth 5e-11 S too
+ * large). The needle's lateral Hessian r / |Pd| was 4e212 there and froze the Newton polish; a
+ * radius below rounding is left out of it. */
+static void test_fuzz_disk_ell_needle(void **state)
+{
+    (void)state;
+    prox_shape a = prox_shape_from_ell((prox_ell){prox_v3(6.9533558078350043e-309, 0, 0),
+                                                   prox_v3(0, 4.3458473798968777e-311, 1.5176459167286629e-47),
+                                                   6.8224679604400703e-38});
+    prox_shape b = prox_shape_from_rcc((prox_rcc){prox_v3(0, 6.3240402667679558e-320, 0),
+                                                  prox_v3(0, 3.3804736801365374e-57, 1.4519044620453895e-47),
+                                                  3.2526678216597571e-86});
+    assert_int_equal(prox_shape_validate(&a), PROX_OK);
+    assert_int_equal(prox_shape_validate(&b), PROX_OK);
+    double S = prox_shape_pair_scale(&a, &b);
+    prox_signed_result r = prox_shape_signed_distance(&a, &b);
+    assert_int_equal(r.status, PROX_OK);
+    assert_true(fabs(r.sd + 1.5176459167286629e-47) <= 1e-12 * S);
+    assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-9 * S);
+}
+
 /* fuzz/crashes/pairs-box-rcc-unit-normal-*: a box and a cylinder 1.8e-43 apart at scale 4.9e-33
  * (4e-11 S): the signed distance's normal, (p2 - p1) divided by the distance, came out 1.03 long (the
  * distance and |p2 - p1| differ by rounding of S). It is normalised by |p2 - p1|. */
@@ -634,6 +658,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_flat_ell_box),
         cmocka_unit_test(test_fuzz_tall_rec_wedge),
         cmocka_unit_test(test_fuzz_needle_ell_plate),
+        cmocka_unit_test(test_fuzz_disk_ell_needle),
         cmocka_unit_test(test_fuzz_axis_support_point),
         cmocka_unit_test(test_fuzz_ell_subnormal_axis),
     };

@@ -112,12 +112,15 @@ static prox_vec3 sqrt_form_hess(prox_vec3 md, prox_vec3 mv, double q, prox_vec3 
     return prox_v3_scale(prox_v3_mad(mv, -prox_v3_dot(md, v) / (q * q), md), 1.0 / q);
 }
 
-/* Hessian of r |P d| (P the projection across the unit axis w) applied to v: r/|Pd| (P - p p^T) v. */
+/* Hessian of r |P d| (P the projection across the unit axis w) applied to v: r/|Pd| (P - p p^T) v.
+ * A radius below PROX_TOL_NOISE of the unit-scale pair adds less than rounding to phi, and near the
+ * axis r / |Pd| would swamp the other body's curvature (a needle's end against a flat ellipsoid:
+ * 4e212, and the Newton polish of the normal could not move): it is left out. */
 static prox_vec3 lateral_hess(prox_vec3 w, double r, prox_vec3 d, prox_vec3 v)
 {
     prox_vec3 perp = prox_v3_reject(d, w);
     double n = prox_v3_norm(perp);
-    if (!(n > 0.0) || !(r > 0.0)) return prox_v3(0, 0, 0);
+    if (!(n > 0.0) || !(r > PROX_TOL_NOISE)) return prox_v3(0, 0, 0);
     prox_vec3 p = prox_v3_scale(perp, 1.0 / n);
     prox_vec3 x = prox_v3_reject(prox_v3_reject(v, w), p);
     return prox_v3_scale(x, r / n);
