@@ -532,6 +532,37 @@ static void test_fuzz_disk_ell_needle(void **state)
     assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-9 * S);
 }
 
+/* fuzz/crashes/pairs-speck-box-arb-*: an ARB tetrahedron 7e-38 across with a corner 1.04e-42 from the
+ * origin, and a BOX speck (edges 4.4e-62, 1.2e-71, 8.6e-67) at the origin. The polytope solver
+ * answered 1.03e-47, uncertified, in the ARB-first order and 1.04e-42 in the other. An uncertified
+ * disjoint polytope answer now takes the support-function method's certified one: both orders agree. */
+static void test_fuzz_speck_box_arb(void **state)
+{
+    (void)state;
+    prox_arb t = {{prox_v3(5.1965198979161049e-191, 1.0327562839796244e-47, 1.0406736229969097e-42),
+                   prox_v3(4.7676443198840789e-38, 1.3694546759344447e-71, 2.177997274330792e-76),
+                   prox_v3(1.2576784215361251e-76, 5.6458121783488538e-38, 5.8777587398662055e-39),
+                   prox_v3(4.5810391479139079e-72, 4.2796599595423588e-38, 2.3797594711882403e-38),
+                   prox_v3(0, 0, 0), prox_v3(0, 0, 0), prox_v3(0, 0, 0), prox_v3(0, 0, 0)},
+                  {1230, 1240, 1340, 2340, 0, 0}};
+    prox_box x = {prox_v3(0, 1.3399466053799959e-206, 2.4045855198813497e-57),
+                  {prox_v3(1.7870744721938102e-317, 4.4279843368336191e-62, 2.7815595026546826e-310),
+                   prox_v3(1.4916681462400413e-154, 0, 1.1992142135052128e-71),
+                   prox_v3(8.6097276566689473e-67, 0, -1.0709393158138347e-149)}};
+    prox_shape a = prox_shape_from_arb(t), b = prox_shape_from_box(x);
+    assert_int_equal(prox_shape_validate(&a), PROX_OK);
+    assert_int_equal(prox_shape_validate(&b), PROX_OK);
+    double S = prox_shape_pair_scale(&a, &b);
+    prox_distance_result ab = prox_shape_distance(&a, &b), ba = prox_shape_distance(&b, &a);
+    assert_int_equal(ab.status, PROX_OK);
+    assert_int_equal(ba.status, PROX_OK);
+    assert_true(ab.certified && ba.certified);
+    assert_true(fabs(ab.distance - ba.distance) <= 1e-12 * S);
+    assert_true(ab.distance > 1.04e-42 && ab.distance < 1.041e-42);
+    prox_signed_result r = prox_shape_signed_distance(&a, &b);
+    assert_true(fabs(r.sd - ab.distance) <= 1e-12 * S);
+}
+
 /* fuzz/crashes/pairs-box-rcc-unit-normal-*: a box and a cylinder 1.8e-43 apart at scale 4.9e-33
  * (4e-11 S): the signed distance's normal, (p2 - p1) divided by the distance, came out 1.03 long (the
  * distance and |p2 - p1| differ by rounding of S). It is normalised by |p2 - p1|. */
@@ -659,6 +690,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_tall_rec_wedge),
         cmocka_unit_test(test_fuzz_needle_ell_plate),
         cmocka_unit_test(test_fuzz_disk_ell_needle),
+        cmocka_unit_test(test_fuzz_speck_box_arb),
         cmocka_unit_test(test_fuzz_axis_support_point),
         cmocka_unit_test(test_fuzz_ell_subnormal_axis),
     };

@@ -233,13 +233,20 @@ static prox_status polys(const prox_shape *a, const prox_shape *b, prox_polytope
     return st != PROX_OK ? st : prox_polytope_checked(b, pb, cb);
 }
 
+static prox_distance_result convex_distance(const prox_shape *a, const prox_shape *b);
+static prox_signed_result convex_signed(const prox_shape *a, const prox_shape *b);
+
+/* The polytope solver's answer, or, when it could not certify a disjoint pair (a speck of a box
+ * 1e-24 of the pair's scale beside an ARB: its features collapse in the pair's frame, and one order
+ * of the pair answered 1e-47 for 1e-42), the support-function method's certified one. */
 static prox_distance_result poly_distance(const prox_shape *a, const prox_shape *b)
 {
     prox_polytope pa, pb;
     prox_vec3 ca, cb;
     prox_distance_result r = {0};
     if ((r.status = polys(a, b, &pa, &ca, &pb, &cb)) != PROX_OK) return r;
-    return prox_poly_distance(&pa, ca, &pb, cb);
+    r = prox_poly_distance(&pa, ca, &pb, cb);
+    return r.certified ? r : convex_distance(a, b);
 }
 
 static prox_signed_result poly_signed(const prox_shape *a, const prox_shape *b)
@@ -249,6 +256,7 @@ static prox_signed_result poly_signed(const prox_shape *a, const prox_shape *b)
     prox_signed_result r = {0};
     if ((r.status = polys(a, b, &pa, &ca, &pb, &cb)) != PROX_OK) return r;
     r = prox_poly_signed(&pa, ca, &pb, cb);
+    if (r.sd > 0.0 && !(r.sd_lower > 0.0)) return convex_signed(a, b); /* a disjoint answer not certified */
     r.certified = 1; /* every separating axis of the two polytopes examined */
     prox_body ba = prox_body_of_polytope(&pa, ca), bb = prox_body_of_polytope(&pb, cb);
     prox_body_signed_bounds(&ba, &bb, &r);
