@@ -563,6 +563,38 @@ static void test_fuzz_speck_box_arb(void **state)
     assert_true(fabs(r.sd - ab.distance) <= 1e-12 * S);
 }
 
+/* fuzz/crashes/pairs-flat-cone-bar-*: a flat TRC (height 1.4e-42, radii 3.3e-86 and 3.3e-33) standing
+ * on edge, a plate BOX at its rim, 3e-13 S deep. The normal lies 4.4e-10 rad from the cone's axis; the
+ * support set's generator took its radial direction from one rejection (2.5e-7 of the axis left in
+ * it: the generator 1.7e-39 off the surface, p1 outside A), and the normal's azimuth about the axis is
+ * known only to eps / 4.4e-10, which put p1 6.8e-8 S aside. The direction is rejected twice, and each
+ * witness is replaced by its body's boundary point nearest the other witness -+ sd n when that meets
+ * p2 - p1 = sd n better. */
+static void test_fuzz_flat_cone_bar(void **state)
+{
+    (void)state;
+    prox_shape a = prox_shape_from_trc((prox_trc){prox_v3(0, 0, 3.1207617423289324e-33),
+                                                   prox_v3(1.0862171861870677e-42, 9.502926062128442e-43, 6.7594656036281756e-67),
+                                                   3.2526002378688664e-86, 3.3163728872201404e-33});
+    prox_box x = {prox_v3(3.6312827119547861e-43, 2.4864294077192132e-91, 9.7481373691084716e-72),
+                  {prox_v3(1.3124110689152746e-71, 3.9616653811780354e-319, 6.8189299973142127e-38),
+                   prox_v3(7.7214844432270255e-43, 7.6794591202961698e-43, 0),
+                   prox_v3(-5.0174541501353949e-38, 5.0449118301161264e-38, 9.6568851227483034e-72)}};
+    prox_shape b = prox_shape_from_box(x);
+    assert_int_equal(prox_shape_validate(&a), PROX_OK);
+    assert_int_equal(prox_shape_validate(&b), PROX_OK);
+    double S = prox_shape_pair_scale(&a, &b);
+    prox_signed_result r = prox_shape_signed_distance(&a, &b);
+    assert_int_equal(r.status, PROX_OK);
+    assert_true(r.sd < 0.0);
+    assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-9 * S);
+    /* each witness in its solid: a ball of 1e-12 S about it meets the solid */
+    double rr = 1e-12 * S;
+    prox_shape w1 = prox_shape_from_sph((prox_sph){r.p1, rr}), w2 = prox_shape_from_sph((prox_sph){r.p2, rr});
+    assert_true(prox_shape_distance(&a, &w1).distance <= rr);
+    assert_true(prox_shape_distance(&b, &w2).distance <= rr);
+}
+
 /* fuzz/crashes/pairs-box-rcc-unit-normal-*: a box and a cylinder 1.8e-43 apart at scale 4.9e-33
  * (4e-11 S): the signed distance's normal, (p2 - p1) divided by the distance, came out 1.03 long (the
  * distance and |p2 - p1| differ by rounding of S). It is normalised by |p2 - p1|. */
@@ -691,6 +723,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_needle_ell_plate),
         cmocka_unit_test(test_fuzz_disk_ell_needle),
         cmocka_unit_test(test_fuzz_speck_box_arb),
+        cmocka_unit_test(test_fuzz_flat_cone_bar),
         cmocka_unit_test(test_fuzz_axis_support_point),
         cmocka_unit_test(test_fuzz_ell_subnormal_axis),
     };

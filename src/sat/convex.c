@@ -792,7 +792,9 @@ static cvx_set cone_set(const prox_body *b, prox_vec3 d, double ftol)
 {
     const prox_cone *k = &b->x.cone;
     double t = prox_v3_dot(d, k->w);
-    prox_vec3 perp = prox_v3_reject(d, k->w);
+    /* rejected twice: once leaves eps of the axis in it, 2.5e-7 of a 4e-10 perp (a flat cone's
+     * lateral normal), which tilted its generator off the surface by that times its radius */
+    prox_vec3 perp = prox_v3_reject(prox_v3_reject(d, k->w), k->w);
     double pn = prox_v3_norm(perp);
     if (pn <= ftol) {
         double r = t >= 0.0 ? k->r2 : k->r1;
@@ -1626,7 +1628,15 @@ static double finish_overlap(cvx *s, prox_signed_result *r)
         double e = witness_overlap(s, c[k], -f, &x, &y);
         if (e < best) best = e, r->sd = -f, r->normal = c[k], r->p1 = x, r->p2 = y;
     }
-    return best; /* |p2 - p1 - sd n| of the answer */
+    double e0 = best, e;
+    if (best > 0.0) { /* each witness replaced by its body's boundary point nearest p_other -+ sd n */
+        prox_vec3 q, m = prox_v3_scale(r->normal, r->sd);
+        prox_body_boundary(&s->a, prox_v3_sub(r->p2, m), &q);
+        if ((e = prox_v3_norm(prox_v3_sub(prox_v3_sub(r->p2, q), m))) < best) best = e, r->p1 = q;
+        prox_body_boundary(&s->b, prox_v3_add(r->p1, m), &q);
+        if ((e = prox_v3_norm(prox_v3_sub(prox_v3_sub(q, r->p1), m))) < best) best = e, r->p2 = q;
+    }
+    return e0; /* |p2 - p1 - sd n| of the support sets' pair: far from 0 off the optimum */
 }
 
 /* A pair that GJK found overlapping but a direction of negative phi separates (touching to
