@@ -11,6 +11,19 @@
  * whose centre and radius are subnormal. Squares of such sizes underflow, and the solvers would
  * return NaN distances and points with PROX_OK. Sizes that small are outside the supported range
  * (docs/design.md, Tolerances): every query must name that, and never answer with a NaN. */
+/* The signed distance of two shapes that must be valid, its status OK and its witnesses on the
+ * normal: |p2 - p1 - sd normal| <= bar S (S the pair's scale, returned). */
+static prox_signed_result signed_checked(const prox_shape *a, const prox_shape *b, double bar, double *S)
+{
+    assert_int_equal(prox_shape_validate(a), PROX_OK);
+    assert_int_equal(prox_shape_validate(b), PROX_OK);
+    *S = prox_shape_pair_scale(a, b);
+    prox_signed_result r = prox_shape_signed_distance(a, b);
+    assert_int_equal(r.status, PROX_OK);
+    assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= bar * *S);
+    return r;
+}
+
 static void test_fuzz_subnormal_rpp_sph(void **state)
 {
     (void)state;
@@ -376,13 +389,9 @@ static void test_fuzz_thin_box_arb(void **state)
                        prox_v3(4.857875059588523e-33, 4.8578750597241048e-33, 0),
                        prox_v3(-5.1366675560706209e-43, 5.1366675559272578e-43, -2.4865050827789592e-105)}};
     prox_shape a = prox_shape_from_arb(t2), b = prox_shape_from_box(plate);
-    assert_int_equal(prox_shape_validate(&a), PROX_OK);
-    assert_int_equal(prox_shape_validate(&b), PROX_OK);
-    double S = prox_shape_pair_scale(&a, &b);
-    prox_signed_result r = prox_shape_signed_distance(&a, &b);
-    assert_int_equal(r.status, PROX_OK);
+    double S;
+    prox_signed_result r = signed_checked(&a, &b, 1e-12, &S);
     assert_true(fabs(r.sd) <= 1e-12 * S);
-    assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-12 * S);
 }
 
 /* fuzz/crashes/pairs-flat-cone-needle-*: a TRC 1e-42 high with radii 2.5e-91 and 4.2e-33 (a cone so
@@ -400,13 +409,9 @@ static void test_fuzz_flat_cone_needle(void **state)
     prox_shape b = prox_shape_from_rcc((prox_rcc){prox_v3(3.6579625774051142e-86, 1.3701162368078138e-71, 2.3169820794023654e-52),
                                                   prox_v3(7.2643449230955801e-43, 5.6469870271868855e-38, 8.6097277008187327e-67),
                                                   1.7441621087990435e-76});
-    assert_int_equal(prox_shape_validate(&a), PROX_OK);
-    assert_int_equal(prox_shape_validate(&b), PROX_OK);
-    double S = prox_shape_pair_scale(&a, &b);
-    prox_signed_result r = prox_shape_signed_distance(&a, &b);
-    assert_int_equal(r.status, PROX_OK);
+    double S;
+    prox_signed_result r = signed_checked(&a, &b, 1e-9, &S);
     assert_true(r.sd < 0.0);
-    assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-9 * S);
     /* the normal leaves the axis by the lateral surface's 2.35e-10 rad */
     double tilt = prox_v3_norm(prox_v3_cross(r.normal, prox_v3(1, 0, 0)));
     assert_true(tilt > 2.0e-10 && tilt < 2.7e-10);
@@ -428,13 +433,9 @@ static void test_fuzz_flat_rec_speck(void **state)
     prox_shape b = prox_shape_from_rcc((prox_rcc){prox_v3(3.2425151552161738e-86, 6.5251640814697118e-38, 4.9084415041371802e-62),
                                                   prox_v3(2.5826636175792067e-57, 4.9094022323932142e-62, 4.5899647488703429e-72),
                                                   4.1801574660598025e-62});
-    assert_int_equal(prox_shape_validate(&a), PROX_OK);
-    assert_int_equal(prox_shape_validate(&b), PROX_OK);
-    double S = prox_shape_pair_scale(&a, &b);
-    prox_signed_result r = prox_shape_signed_distance(&a, &b);
-    assert_int_equal(r.status, PROX_OK);
+    double S;
+    prox_signed_result r = signed_checked(&a, &b, 1e-9, &S);
     assert_true(r.sd < 0.0 && fabs(r.sd + 1.0399736552673013e-42) <= 1e-9 * S);
-    assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-9 * S);
 }
 
 /* fuzz/crashes/pairs-flat-ell-box-*: a flat oblate ELL (semi-axis 1.7e-52 along its axis, radius
@@ -454,13 +455,9 @@ static void test_fuzz_flat_ell_box(void **state)
                    prox_v3(3.5391017144799187e-57, -2.3183852293721245e-52, 1.7317746548165821e-153),
                    prox_v3(2.7629558064904835e-158, -1.8099233395719769e-153, -2.4230055140642997e-52)}};
     prox_shape b = prox_shape_from_box(x);
-    assert_int_equal(prox_shape_validate(&a), PROX_OK);
-    assert_int_equal(prox_shape_validate(&b), PROX_OK);
-    double S = prox_shape_pair_scale(&a, &b);
-    prox_signed_result r = prox_shape_signed_distance(&a, &b);
-    assert_int_equal(r.status, PROX_OK);
+    double S;
+    prox_signed_result r = signed_checked(&a, &b, 1e-9, &S);
     assert_true(r.sd < 0.0);
-    assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-9 * S);
 }
 
 /* fuzz/crashes/pairs-tall-rec-wedge-*: an REC 131072 high with semi-axes 1.5 and 0.7 against a unit
@@ -474,13 +471,9 @@ static void test_fuzz_tall_rec_wedge(void **state)
     prox_shape a = prox_shape_from_rec((prox_rec){prox_v3(0, 0, 0), prox_v3(0, 4.7783097267364807e-299, 131071.998046875),
                                                   prox_v3(1.5, 0, 0), prox_v3(0, 0.7, -2.5518927448709041e-304)});
     prox_shape b = prox_shape_from_wed((prox_wed){prox_v3(1.200244140625, 0, 0), prox_v3(1, 0, 0), prox_v3(0, 1, 0), prox_v3(0, 0, 1)});
-    assert_int_equal(prox_shape_validate(&a), PROX_OK);
-    assert_int_equal(prox_shape_validate(&b), PROX_OK);
-    double S = prox_shape_pair_scale(&a, &b);
-    prox_signed_result r = prox_shape_signed_distance(&a, &b);
-    assert_int_equal(r.status, PROX_OK);
+    double S;
+    prox_signed_result r = signed_checked(&a, &b, 1e-12, &S);
     assert_true(fabs(r.sd + (1.5 - 1.200244140625)) <= 1e-12 * S);
-    assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-12 * S);
 }
 
 /* fuzz/crashes/pairs-needle-ell-plate-*: a needle ELL (semi-axis 1.25e-47, radius 2.9e-57) through a
@@ -499,13 +492,9 @@ static void test_fuzz_needle_ell_plate(void **state)
                    prox_v3(2.4052551140642279e-57, 2.7432344851520733e-57, 0),
                    prox_v3(-2.777625635117845e-57, 2.4354091128497663e-57, 1.5834484125274852e-120)}};
     prox_shape b = prox_shape_from_box(x);
-    assert_int_equal(prox_shape_validate(&a), PROX_OK);
-    assert_int_equal(prox_shape_validate(&b), PROX_OK);
-    double S = prox_shape_pair_scale(&a, &b);
-    prox_signed_result r = prox_shape_signed_distance(&a, &b);
-    assert_int_equal(r.status, PROX_OK);
+    double S;
+    prox_signed_result r = signed_checked(&a, &b, 1e-9, &S);
     assert_true(r.sd < 0.0);
-    assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-9 * S);
 }
 
 /* fuzz/crashes/pairs-disk-ell-needle-*: a flat ELL (a disk 1.5e-47 thick, radius 6.8e-38) crossed by
@@ -523,13 +512,9 @@ static void test_fuzz_disk_ell_needle(void **state)
     prox_shape b = prox_shape_from_rcc((prox_rcc){prox_v3(0, 6.3240402667679558e-320, 0),
                                                   prox_v3(0, 3.3804736801365374e-57, 1.4519044620453895e-47),
                                                   3.2526678216597571e-86});
-    assert_int_equal(prox_shape_validate(&a), PROX_OK);
-    assert_int_equal(prox_shape_validate(&b), PROX_OK);
-    double S = prox_shape_pair_scale(&a, &b);
-    prox_signed_result r = prox_shape_signed_distance(&a, &b);
-    assert_int_equal(r.status, PROX_OK);
+    double S;
+    prox_signed_result r = signed_checked(&a, &b, 1e-9, &S);
     assert_true(fabs(r.sd + 1.5176459167286629e-47) <= 1e-12 * S);
-    assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-9 * S);
 }
 
 /* fuzz/crashes/pairs-speck-box-arb-*: an ARB tetrahedron 7e-38 across with a corner 1.04e-42 from the
@@ -581,13 +566,9 @@ static void test_fuzz_flat_cone_bar(void **state)
                    prox_v3(7.7214844432270255e-43, 7.6794591202961698e-43, 0),
                    prox_v3(-5.0174541501353949e-38, 5.0449118301161264e-38, 9.6568851227483034e-72)}};
     prox_shape b = prox_shape_from_box(x);
-    assert_int_equal(prox_shape_validate(&a), PROX_OK);
-    assert_int_equal(prox_shape_validate(&b), PROX_OK);
-    double S = prox_shape_pair_scale(&a, &b);
-    prox_signed_result r = prox_shape_signed_distance(&a, &b);
-    assert_int_equal(r.status, PROX_OK);
+    double S;
+    prox_signed_result r = signed_checked(&a, &b, 1e-9, &S);
     assert_true(r.sd < 0.0);
-    assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-9 * S);
     /* each witness in its solid: a ball of 1e-12 S about it meets the solid */
     double rr = 1e-12 * S;
     prox_shape w1 = prox_shape_from_sph((prox_sph){r.p1, rr}), w2 = prox_shape_from_sph((prox_sph){r.p2, rr});
