@@ -599,6 +599,37 @@ static void test_fuzz_box_rcc_unit_normal(void **state)
     assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-9 * S);
 }
 
+/* fuzz/crashes/pairs-box-box-unit-normal-*: two boxes 9.1e-43 apart at scale 4.1e-33 (2.2e-10 S),
+ * one a flake (edges 1.1e-47, 1.4e-76, 2.4e-57). The signed distance's normal, (p2 - p1) divided by
+ * the certified distance, came out 8.3e-8 short of unit length (the two differ by rounding of S). It
+ * is normalised by |p2 - p1| (the shared disjoint result of the box, sphere and polytope pairs). */
+static void test_fuzz_box_box_unit_normal(void **state)
+{
+    (void)state;
+    prox_box x = {prox_v3(4.5898827218673197e-72, 9.0544833190134022e-43, 6.1305458782764389e-62),
+                  {prox_v3(3.5335622388404566e-57, 1.1097864152093573e-47, 3.540053731783817e-62),
+                   prox_v3(1.3980432857307387e-76, -4.4513726587767823e-86, -4.4595503115607228e-91),
+                   prox_v3(-7.6724063549193705e-72, 7.6724063553616302e-72, -2.4052551140642281e-57)}};
+    prox_box y = {prox_v3(0, 0, 0),
+                  {prox_v3(3.3156234292597501e-33, 1.5762945277690138e-52, 6.990111006888342e-77),
+                   prox_v3(-3.3449472249974775e-91, -1.5902354772589009e-110, 1.5866107673983866e-47),
+                   prox_v3(1.9432500780644715e-52, -4.0874883305346056e-33, -7.0741327462581318e-112)}};
+    prox_shape a = prox_shape_from_box(x), b = prox_shape_from_box(y);
+    assert_int_equal(prox_shape_validate(&a), PROX_OK);
+    assert_int_equal(prox_shape_validate(&b), PROX_OK);
+    double S = prox_shape_pair_scale(&a, &b);
+    for (int k = 0; k < 2; ++k) {
+        prox_signed_result r = k ? prox_shape_signed_distance(&b, &a) : prox_shape_signed_distance(&a, &b);
+        assert_int_equal(r.status, PROX_OK);
+        assert_true(r.sd > 0.0);
+        assert_true(fabs(prox_v3_norm(r.normal) - 1.0) <= 1e-12);
+        assert_true(prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) <= 1e-12 * S);
+        prox_test_result t = prox_shape_test(k ? &b : &a, k ? &a : &b);
+        assert_int_equal(t.status, PROX_OK);
+        if (prox_v3_norm(t.direction) > 0.0) assert_true(fabs(prox_v3_norm(t.direction) - 1.0) <= 1e-12);
+    }
+}
+
 /* fuzz/crashes/pairs-axis-support-*: an ellipsoid of size 1 at the origin against a cylinder 1e50 away
  * whose axis points exactly along the line of centres. The cylinder's support point along its axis
  * took the radial direction from a residual at rounding level that lay along the axis itself, which
@@ -695,6 +726,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_signed_witness_tiny_disk), cmocka_unit_test(test_fuzz_speck_rhp_disk),
         cmocka_unit_test(test_fuzz_rhp_needle_ell),
         cmocka_unit_test(test_fuzz_box_rcc_unit_normal),
+        cmocka_unit_test(test_fuzz_box_box_unit_normal),
         cmocka_unit_test(test_fuzz_rhp_lean_needle),
         cmocka_unit_test(test_fuzz_thin_box_arb),
         cmocka_unit_test(test_fuzz_flat_cone_needle),

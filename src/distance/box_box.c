@@ -678,7 +678,7 @@ static prox_distance_result unit_distance(const prox_bframe *pA, const prox_bfra
     }
     if (certified_distance(&A, &B, L, S, 3, &r)) return r;
     r.distance = pruned_feature_distance(&A, &B, L, &r.p1, &r.p2);
-    prox_vec3 n = r.distance > 0.0 ? prox_v3_divs(prox_v3_sub(r.p2, r.p1), r.distance) : L;
+    prox_vec3 n = r.distance > 0.0 ? prox_v3_normalize(prox_v3_sub(r.p2, r.p1)) : L; /* unit: the gap along it */
     r.certificate_gap = pair_gap(&A, &B, r.p1, r.p2, n, S);
     r.certified = r.distance - r.certificate_gap <= PROX_TOL_CERT * S;
     return r;

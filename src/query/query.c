@@ -389,7 +389,7 @@ PROX_API prox_test_result prox_shape_test(const prox_shape *a, const prox_shape 
     r.status = d.status;
     r.intersect = d.intersect;
     if (d.status == PROX_OK && !d.intersect && d.distance > 0.0) {
-        r.direction = prox_v3_scale(prox_v3_sub(d.p2, d.p1), 1.0 / d.distance);
+        r.direction = prox_v3_normalize(prox_v3_sub(d.p2, d.p1));
         r.value = d.certificate_gap;
     }
     return r;
@@ -499,7 +499,7 @@ PROX_API prox_reposition_result prox_shape_reposition(const prox_shape *a, const
     prox_distance_result d = prox_shape_distance(a, &b2);
     double tol = 4.0 * DBL_EPSILON * prox_shape_pair_scale(a, &b2);
     if (d.status == PROX_OK && d.distance > 0.0 && fabs(d.distance - margin) > tol) {
-        prox_vec3 n2 = prox_v3_scale(prox_v3_sub(d.p2, d.p1), 1.0 / d.distance);
+        prox_vec3 n2 = prox_v3_normalize(prox_v3_sub(d.p2, d.p1));
         r.translation = prox_v3_mad(r.translation, margin - d.distance, n2);
         r.normal = prox_v3_normalize(r.translation);
     }

@@ -325,7 +325,7 @@ prox_test_result prox_query_sph_test(const prox_shape *b, const prox_sph *s, int
     r.status = d.status;
     r.intersect = d.intersect;
     if (d.status == PROX_OK && !d.intersect) {
-        r.direction = prox_v3_scale(prox_v3_sub(d.p2, d.p1), 1.0 / d.distance);
+        r.direction = prox_v3_normalize(prox_v3_sub(d.p2, d.p1));
         r.value = d.certificate_gap;
     }
     return r;
