@@ -55,7 +55,9 @@
 #define CVX_BB_BUDGET 40000
 #define CVX_GOLD 1.6180339887498948482 /* the icosahedron (0, +-1, +-golden) and its cyclic shifts */
 #define CVX_NEAR_GJK 1e-4  /* radius (rad) of the early kink search around GJK's best direction */
-#define CVX_GJK_LOOSE 1e-6 /* a kink-free pair's first GJK stops at this relative gap (then Newton) */
+#define CVX_GJK_LOOSE 1e-6 /* every pair's first GJK stops at this relative gap (then Newton, kinks) */
+#define CVX_NEAR_LOOSE 1e-3 /* radius (rad) of the early kink search after that loose GJK: its best
+                             * direction is ~sqrt(1e-6) off along a rim, ~1e-6 across one */
 #define CVX_EPA_POINTS 140 /* support points the depth's inner polytope may take (epa.h) */
 #define CVX_EPA_LOCAL 1e-3 /* radius (rad) of the kink search around the polytope's deepest direction,
                             * which its proof puts ~1e-5 rad from the optimum (within 1e-10 S of it) */
@@ -82,9 +84,11 @@ typedef struct cvx {
     prox_vec3 delta;  /* b.c - a.c */
     double S;         /* scale of the scaled pair */
     double gjk_rel;   /* GJK also stops at |v| + phi <= gjk_rel |v| (0: only at rounding) */
+    double near;      /* radius (rad) of the early kink search around GJK's best direction */
     double best_phi;
     prox_vec3 best_d;
     int halvings;     /* of a gradient step's line search (newton_step) */
+    int nhalvings;    /* of a Newton step's line search */
     int nk;
     cvx_kink k[CVX_MAXK];
     int ntop;
@@ -461,7 +465,7 @@ static double newton_step(cvx *s, prox_vec3 *dp, double *fp)
     /* among the depth's many starts a gradient step that needs more than CVX_GRAD_HALVINGS halvings
      * has met a kink, where the kink searches take over; elsewhere (the best's own descent) it keeps
      * halving, which a body far thinner than the other needs */
-    int halvings = a > 0.0 && det > 0.0 ? 30 : s->halvings;
+    int halvings = a > 0.0 && det > 0.0 ? s->nhalvings : s->halvings;
     for (int ls = 0; ls < halvings; ++ls) {
         prox_vec3 dn = unit(prox_v3_add(d, prox_v3_add(prox_v3_scale(t1, x1), prox_v3_scale(t2, x2))));
         double fn = phi_eval(s, dn);
@@ -1602,9 +1606,10 @@ static void pair_make(const prox_body *a, const prox_body *b, cvx *s, prox_vec3 
     s->delta = prox_v3_sub(s->b.c, s->a.c);
     s->S = S * *f;
     s->gjk_rel = 0.0;
+    s->near = CVX_NEAR_GJK;
     s->best_phi = INFINITY;
     s->best_d = prox_v3(0, 0, 1);
-    s->halvings = 30;
+    s->halvings = s->nhalvings = 30;
     s->nk = s->ntop = 0;
     body_kinks(s, &s->a, 1.0);
     body_kinks(s, &s->b, -1.0);
@@ -1680,17 +1685,17 @@ static int gjk_certified(const cvx *s, const gjk_out *g, cvx_answer *r);
 static int newton_certified(cvx *s, const gjk_out *g, cvx_answer *r);
 
 /* The signed answer of a scaled pair: a disjoint pair first tries the distance query's cheap
- * certificates (GJK's pair, Newton from its direction; GJK stopped at CVX_GJK_LOOSE first when
- * neither body has kinks), whose pair along its own direction is the answer with its normal. */
+ * certificates (GJK stopped at CVX_GJK_LOOSE, Newton and the kinks near its direction; then GJK to
+ * rounding, its pair, Newton and the kinks again), whose pair along its own direction is the answer
+ * with its normal. */
 static prox_signed_result signed_run(const prox_body *a, const prox_body *b, cvx *s, prox_convex_info *info, int full)
 {
     if (full) return signed_scaled(s, info, gjk_run(s), 1);
-    int loose = s->nk == 0;
-    if (loose) s->gjk_rel = CVX_GJK_LOOSE;
+    s->gjk_rel = CVX_GJK_LOOSE, s->near = CVX_NEAR_LOOSE;
     gjk_out g = gjk_run(s);
     cvx_answer e;
     int early = g.verdict == 1 && (gjk_certified(s, &g, &e) || newton_certified(s, &g, &e));
-    if (!early && loose && g.verdict == 1) { /* to rounding, from the start */
+    if (!early && g.verdict == 1) { /* to rounding, from the start */
         prox_vec3 o;
         double f;
         pair_make(a, b, s, &o, &f);
@@ -1816,31 +1821,34 @@ static int gjk_certified(const cvx *s, const gjk_out *g, cvx_answer *r)
 }
 
 /* The next cheapest: Newton on the sphere from GJK's best direction (it reaches the normal of a
- * smooth contact quadratically), the kink points near it (a polytope's face normals), the support
- * points there; then the kink circles within CVX_NEAR_GJK of it (an edge or a rim: GJK to rounding
- * leaves its direction far closer) and the closest pair of the support sets at the best direction
+ * smooth contact quadratically; each line search gives up after CVX_GRAD_HALVINGS, where a step has
+ * met a kink), the kink points near it (a polytope's face normals), the support points there; then
+ * the kink circles within s->near of it (an edge or a rim: CVX_NEAR_LOOSE after the loose GJK,
+ * CVX_NEAR_GJK after GJK to rounding) and the closest pair of the support sets at the best direction
  * alone (witness_disjoint). */
 static int newton_certified(cvx *s, const gjk_out *g, cvx_answer *r)
 {
     if (g->verdict != 1 || !(s->best_phi < 0.0)) return 0;
+    s->halvings = s->nhalvings = CVX_GRAD_HALVINGS; /* a step that needs more has met a kink */
     cell_newton(s, s->best_d);
+    s->halvings = s->nhalvings = 30;
     for (int i = 0; i < s->nk; ++i)
         if (!s->k[i].circle && kink_dist(&s->k[i], s->best_d) <= CVX_LOCAL) consider(s, s->k[i].w);
     prox_vec3 x, y;
     support_points(s, s->best_d, &x, &y); /* a smooth contact: the support points themselves */
     if (pair_certified(s, x, y, r)) return 1;
-    kinks_local(s, s->best_d, CVX_NEAR_GJK); /* an edge: the kink circles through the optimum */
+    kinks_local(s, s->best_d, s->near); /* an edge: the kink circles through the optimum */
     witness_disjoint(s, s->best_d, &x, &y);
     return pair_certified(s, x, y, r);
 }
 
-/* The distance query. mode CVX_FAST, for a pair with no kinks (ELL, SPH: phi smooth everywhere, so
- * Newton converges quadratically from anywhere near the optimum): GJK stopped at a relative gap of
- * CVX_GJK_LOOSE (GJK converges only linearly on curved bodies), then Newton and the support points
- * at its best direction; not certified there, the query runs again in mode CVX_TIGHT, which every
- * pair with kinks starts with: GJK to rounding, its own certificate, Newton and the support sets at
- * its best direction, then the full search. CVX_FULL: GJK to rounding and the full search (the
- * reference of the tests). */
+/* The distance query. mode CVX_FAST: GJK stopped at a relative gap of CVX_GJK_LOOSE (it converges
+ * only linearly on curved bodies: to rounding it took ~23 iterations a pair on the bench's curved
+ * pairs, stopped there ~14), then Newton from its best direction (quadratic on a smooth contact), the
+ * kinks within CVX_NEAR_LOOSE of it (a rim or an edge: the loose direction is ~1e-3 rad off along
+ * one) and the support sets there; not certified there, the query runs again in mode CVX_TIGHT: GJK
+ * to rounding, its own certificate, Newton and the kinks within CVX_NEAR_GJK, then the full search.
+ * CVX_FULL: GJK to rounding and the full search (the reference of the tests). */
 enum { CVX_FAST, CVX_TIGHT, CVX_FULL };
 
 static prox_distance_result distance_run(const prox_body *a, const prox_body *b, prox_convex_info *info, int mode)
@@ -1855,8 +1863,7 @@ static prox_distance_result distance_run(const prox_body *a, const prox_body *b,
     prox_vec3 o;
     double f;
     pair_make(a, b, &s, &o, &f);
-    if (mode == CVX_FAST && s.nk > 0) mode = CVX_TIGHT; /* a kink: Newton alone may not reach it */
-    if (mode == CVX_FAST) s.gjk_rel = CVX_GJK_LOOSE;
+    if (mode == CVX_FAST) s.gjk_rel = CVX_GJK_LOOSE, s.near = CVX_NEAR_LOOSE;
     gjk_out g = gjk_run(&s);
     cvx_answer ans = {0};
     int early = 0;
