@@ -20,61 +20,6 @@
 
 #define BAR 1e-12 /* the accuracy bar of distances and points, in units of S */
 
-static double lsize(test_rng *g) { return exp(test_range(g, log(0.2), log(10.0))); }
-
-/* A random solid of any kind centred near c, random orientation (RPP axis-aligned). */
-static prox_shape any_shape(test_rng *g, int kind, prox_vec3 c)
-{
-    double s[4];
-    for (int k = 0; k < 4; ++k) s[k] = lsize(g);
-    test_rot R = test_random_rot(g);
-    prox_vec3 e0 = test_rot_apply(&R, prox_v3(1, 0, 0)), e1 = test_rot_apply(&R, prox_v3(0, 1, 0)), e2 = test_rot_apply(&R, prox_v3(0, 0, 1));
-    prox_vec3 base = prox_v3_mad(c, -0.5 * s[0], e2);
-    switch (kind) {
-    case PROX_SHAPE_RCC: return prox_shape_from_rcc((prox_rcc){base, prox_v3_scale(e2, s[0]), 0.5 * s[1]});
-    case PROX_SHAPE_BOX: {
-        prox_box b = {c, {prox_v3_scale(e0, s[0]), prox_v3_scale(e1, s[1]), prox_v3_scale(e2, s[2])}};
-        for (int k = 0; k < 3; ++k) b.corner = prox_v3_mad(b.corner, -0.5, b.edge[k]);
-        return prox_shape_from_box(b);
-    }
-    case PROX_SHAPE_RPP:
-        return prox_shape_from_rpp((prox_rpp){c.x - 0.5 * s[0], c.x + 0.5 * s[0], c.y - 0.5 * s[1], c.y + 0.5 * s[1], c.z - 0.5 * s[2],
-                                              c.z + 0.5 * s[2]});
-    case PROX_SHAPE_SPH: return prox_shape_from_sph((prox_sph){c, 0.5 * s[0]});
-    case PROX_SHAPE_TRC: {
-        prox_trc t = {base, prox_v3_scale(e2, s[0]), 0.5 * s[1], test_uniform(g) < 0.2 ? 0.0 : 0.5 * s[2]};
-        if (t.r1 == t.r2) t.r2 *= 0.5;
-        return prox_shape_from_trc(t);
-    }
-    case PROX_SHAPE_REC:
-        return prox_shape_from_rec((prox_rec){base, prox_v3_scale(e2, s[0]), prox_v3_scale(e0, 0.5 * fmax(s[1], s[2])),
-                                              prox_v3_scale(e1, 0.5 * fmin(s[1], s[2]))});
-    case PROX_SHAPE_ELL: return prox_shape_from_ell((prox_ell){c, prox_v3_scale(e2, 0.5 * s[0]), 0.5 * s[1]});
-    case PROX_SHAPE_RHP: {
-        prox_rhp h;
-        assert_int_equal(prox_rhp_regular(base, prox_v3_scale(e2, s[0]), prox_v3_scale(e0, 0.5 * s[1]), &h), PROX_OK);
-        return prox_shape_from_rhp(h);
-    }
-    case PROX_SHAPE_WED: {
-        double a = test_range(g, 0.3, 2.8);
-        prox_wed w = {prox_v3_mad(base, -0.3 * s[1], e0), prox_v3_scale(e0, s[1]),
-                      prox_v3_scale(prox_v3_add(prox_v3_scale(e0, cos(a)), prox_v3_scale(e1, sin(a))), s[2]), prox_v3_scale(e2, s[0])};
-        return prox_shape_from_wed(w);
-    }
-    default: { /* ARB: a frustum, the top rectangle the bottom one scaled by f */
-        prox_arb x = {{{0}}, {1234, 5678, 1265, 2376, 3487, 4158}};
-        double f = test_range(g, 0.2, 1.5);
-        static const double sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
-        for (int i = 0; i < 4; ++i) {
-            prox_vec3 q = prox_v3_add(prox_v3_scale(e0, 0.5 * s[1] * sx[i]), prox_v3_scale(e1, 0.5 * s[2] * sy[i]));
-            x.corner[i] = prox_v3_add(base, q);
-            x.corner[i + 4] = prox_v3_add(prox_v3_mad(base, s[0], e2), prox_v3_scale(q, f));
-        }
-        return prox_shape_from_arb(x);
-    }
-    }
-}
-
 typedef struct stats {
     int pairs, disjoint, early;
     double err_d, err_w;
@@ -149,9 +94,9 @@ static void check_pair(const prox_shape *sa, const prox_shape *sb, stats *st)
 static void make_pair(test_rng *g, int fam, int ka, int kb, prox_shape *a, prox_shape *b)
 {
     prox_vec3 o = fam == 3 ? prox_v3_scale(test_unit(g), 1e6 * test_range(g, 1.0, 10.0)) : prox_v3(0, 0, 0);
-    *a = any_shape(g, ka, o);
+    *a = test_any_shape(g, ka, o);
     double sz = prox_shape_size(a);
-    *b = any_shape(g, kb, prox_v3_mad(o, sz * exp(test_range(g, log(0.05), log(2.0))), test_unit(g)));
+    *b = test_any_shape(g, kb, prox_v3_mad(o, sz * exp(test_range(g, log(0.05), log(2.0))), test_unit(g)));
     if (fam == 0 || fam == 3) return;
     prox_body ba = prox_body_make(a), bb = prox_body_make(b);
     prox_signed_result r = prox_convex_signed(&ba, &bb);

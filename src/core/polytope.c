@@ -502,6 +502,49 @@ prox_vec3 prox_polytope_closest(const prox_polytope *p, prox_vec3 y)
     return boundary_closest(p, y);
 }
 
+int prox_polytope_face_foot(const prox_polytope *p, int f, prox_vec3 y, prox_vec3 *x)
+{
+    prox_vec3 n = p->n[f];
+    *x = prox_v3_mad(y, p->d[f] - prox_v3_dot(n, y), n);
+    int m = p->fnv[f];
+    for (int i = 0; i < m; ++i) {
+        prox_vec3 a = p->v[p->fv[f][i]], b = p->v[p->fv[f][i + 1 < m ? i + 1 : 0]];
+        if (prox_v3_dot(prox_v3_cross(prox_v3_sub(b, a), n), prox_v3_sub(*x, a)) > 0.0) return 0;
+    }
+    return 1;
+}
+
+int prox_polytope_closest_feature(const prox_polytope *p, prox_vec3 y, prox_vec3 *q, int *i, int *j, double *t)
+{
+    *q = y, *i = *j = 0, *t = 0.0;
+    if (prox_polytope_contains(p, y, 0.0)) return PROX_POLY_INSIDE;
+    int kind = PROX_POLY_CORNER;
+    double bd = INFINITY;
+    for (int f = 0; f < p->nf; ++f) {
+        if (prox_v3_dot(p->n[f], y) <= p->d[f]) continue; /* seen from behind: never nearest */
+        prox_vec3 x;
+        if (prox_polytope_face_foot(p, f, y, &x)) { /* nearer than any point of its border */
+            double dd = prox_v3_norm2(prox_v3_sub(x, y));
+            if (dd < bd) bd = dd, *q = x, *i = f, kind = PROX_POLY_FACE;
+            continue;
+        }
+        int m = p->fnv[f];
+        for (int k = 0; k < m; ++k) {
+            int a = p->fv[f][k], b = p->fv[f][k + 1 < m ? k + 1 : 0];
+            prox_vec3 e = prox_v3_sub(p->v[b], p->v[a]);
+            double l2 = prox_v3_norm2(e), s = l2 > 0.0 ? prox_v3_dot(prox_v3_sub(y, p->v[a]), e) / l2 : 0.0;
+            s = s < 0.0 ? 0.0 : (s > 1.0 ? 1.0 : s);
+            prox_vec3 z = s == 1.0 ? p->v[b] : prox_v3_mad(p->v[a], s, e);
+            double dd = prox_v3_norm2(prox_v3_sub(z, y));
+            if (!(dd < bd)) continue;
+            bd = dd, *q = z;
+            if (s > 0.0 && s < 1.0) *i = a, *j = b, *t = s, kind = PROX_POLY_EDGE;
+            else *i = s > 0.0 ? b : a, kind = PROX_POLY_CORNER;
+        }
+    }
+    return kind;
+}
+
 double prox_polytope_boundary(const prox_polytope *p, prox_vec3 y, prox_vec3 *q)
 {
     if (!prox_polytope_contains(p, y, 0.0)) {

@@ -54,6 +54,15 @@ int prox_polytope_contains(const prox_polytope *p, prox_vec3 y, double tol);
 /* Closest point of the solid to y (y itself inside), relative to c. */
 prox_vec3 prox_polytope_closest(const prox_polytope *p, prox_vec3 y);
 
+/* The same closest point *q with the feature it lies on: PROX_POLY_INSIDE (y in the solid, *q = y),
+ * PROX_POLY_FACE (the interior of face *i), PROX_POLY_EDGE (the segment from corner *i to corner *j,
+ * at the fraction *t of it) or PROX_POLY_CORNER (corner *i). */
+enum { PROX_POLY_INSIDE = 0, PROX_POLY_FACE, PROX_POLY_EDGE, PROX_POLY_CORNER };
+int prox_polytope_closest_feature(const prox_polytope *p, prox_vec3 y, prox_vec3 *q, int *i, int *j, double *t);
+
+/* The foot *x of y on the plane of face f; 1 when it lies in the face (inside every side). */
+int prox_polytope_face_foot(const prox_polytope *p, int f, prox_vec3 y, prox_vec3 *x);
+
 /* The hexagon of an RHP in its base plane: in-plane axes e1, e2, the six side normals nl[k] and
  * offsets dl[k] in those axes sorted by angle, their MCNP facet numbers fk[k], and corner k where
  * side lines k and k + 1 meet (x[k], by Cramer's rule with determinant det[k]). Computed once and

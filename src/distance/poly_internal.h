@@ -7,6 +7,7 @@
 #ifndef PROX_DISTANCE_POLY_INTERNAL_H
 #define PROX_DISTANCE_POLY_INTERNAL_H
 
+#include "core/body.h"
 #include "core/box.h"
 #include "core/polytope.h"
 #include "prox/result.h"
@@ -45,6 +46,15 @@ enum { PROX_GJK_FAIL = 0, PROX_GJK_DISJOINT = 1, PROX_GJK_OVERLAP = 2 };
 
 int prox_gjk_polytopes(const prox_vec3 *va, int na, const prox_vec3 *vb, int nb, prox_vec3 dir, double S, double touch,
                        prox_gjk_simplex *out);
+
+/* A polytope against a curved body (core/body.h: RCC, TRC, REC, ELL) by alternating projections and
+ * feature pairs (distance/poly_body.c): PROX_PB_DISJOINT with a closest pair certified by weak
+ * duality (r: distance, p1 on P, p2 on B, certificate_gap, certified), PROX_PB_MEET with a common
+ * point checked in both solids to PROX_TOL_TOUCH S, the engine's test (r: intersect, p1 = p2), or
+ * PROX_PB_OPEN (nothing settled: the caller asks the certified support-function engine). S is the
+ * pair's scale. */
+enum { PROX_PB_OPEN = 0, PROX_PB_DISJOINT, PROX_PB_MEET };
+int prox_poly_body_fast(const prox_polytope *p, prox_vec3 cp, const prox_body *b, double S, prox_distance_result *r);
 
 /* BOX-BOX on prepared frames (core/box.h): the fast paths behind prox_box_box_distance and
  * prox_box_box_signed_distance, for callers that already hold the frames (scenes, dispatch). */

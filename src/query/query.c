@@ -32,6 +32,7 @@ typedef enum route {
     ROUTE_SPH_A,  /* A a sphere, B not */
     ROUTE_SPH_B,  /* B a sphere, A not */
     ROUTE_POLY,   /* two polytopes, one of them RHP, WED or ARB */
+    ROUTE_POLY_BODY, /* a polytope and a curved body (RCC, TRC, REC, ELL), not BOX-RCC */
     ROUTE_CONVEX  /* the rest: the support-function method */
 } route;
 
@@ -41,6 +42,11 @@ static int kind_poly(prox_shape_kind k)
     return k == PROX_SHAPE_BOX || k == PROX_SHAPE_RPP || k >= PROX_SHAPE_RHP;
 }
 
+static int kind_curved(prox_shape_kind k)
+{
+    return k == PROX_SHAPE_RCC || k == PROX_SHAPE_TRC || k == PROX_SHAPE_REC || k == PROX_SHAPE_ELL;
+}
+
 /* The route of a pair of known kinds. */
 static route route_of(prox_shape_kind ka, prox_shape_kind kb)
 {
@@ -48,6 +54,7 @@ static route route_of(prox_shape_kind ka, prox_shape_kind kb)
     if (sa != sb) return sa ? ROUTE_SPH_A : ROUTE_SPH_B;
     if (kind_old(ka) && kind_old(kb)) return ROUTE_OLD;
     if (kind_poly(ka) && kind_poly(kb)) return ROUTE_POLY;
+    if ((kind_poly(ka) && kind_curved(kb)) || (kind_curved(ka) && kind_poly(kb))) return ROUTE_POLY_BODY;
     return ROUTE_CONVEX;
 }
 
@@ -78,6 +85,7 @@ static int poly_fits(const prox_shape *s)
 static route route_shapes(const prox_shape *a, const prox_shape *b)
 {
     route r = route_of(a->kind, b->kind);
+    if (r == ROUTE_POLY_BODY) return poly_fits(kind_poly(a->kind) ? a : b) ? r : ROUTE_CONVEX;
     return r == ROUTE_POLY && !(poly_fits(a) && poly_fits(b)) ? ROUTE_CONVEX : r;
 }
 
@@ -277,6 +285,8 @@ static prox_distance_result convex_distance(const prox_shape *a, const prox_shap
  * can stand ~1e-10 rad off the line of the witnesses (p2 - p1 then misses sd normal by sd x that).
  * The witnesses are the exact closest pair, so their direction is the normal: taken when they are
  * more than PROX_TOL_WITNESS_DIR S apart (its rounding then below 1e-12 rad). */
+static prox_signed_result convex_signed_bodies(const prox_body *ba, const prox_body *bb);
+
 static prox_signed_result convex_signed(const prox_shape *a, const prox_shape *b)
 {
     prox_body ba = prox_body_make(a), bb = prox_body_make(b);
@@ -286,17 +296,20 @@ static prox_signed_result convex_signed(const prox_shape *a, const prox_shape *b
         prox_body_signed_bounds(&ba, &bb, &c);
         return c;
     }
-    prox_signed_result s = prox_convex_signed(&ba, &bb);
-    if (s.status == PROX_OK && s.sd > 0.0) {
-        prox_vec3 v = prox_v3_sub(s.p2, s.p1);
-        double len = prox_v3_norm(v), S = fmax(prox_v3_dist(ba.c, bb.c), fmax(ba.size, bb.size));
-        if (len > PROX_TOL_WITNESS_DIR * S) s.normal = prox_v3_scale(v, 1.0 / len);
-    }
-    prox_body_signed_bounds(&ba, &bb, &s);
-    return s;
+    return convex_signed_bodies(&ba, &bb);
 }
 
-/* ---- public queries ---- */
+static prox_signed_result convex_signed_bodies(const prox_body *ba, const prox_body *bb)
+{
+    prox_signed_result s = prox_convex_signed(ba, bb);
+    if (s.status == PROX_OK && s.sd > 0.0) {
+        prox_vec3 v = prox_v3_sub(s.p2, s.p1);
+        double len = prox_v3_norm(v), S = fmax(prox_v3_dist(ba->c, bb->c), fmax(ba->size, bb->size));
+        if (len > PROX_TOL_WITNESS_DIR * S) s.normal = prox_v3_scale(v, 1.0 / len);
+    }
+    prox_body_signed_bounds(ba, bb, &s);
+    return s;
+}
 
 /* The pair scale of valid shapes. */
 static double pair_scale(const prox_shape *a, const prox_shape *b)
@@ -307,6 +320,57 @@ static double pair_scale(const prox_shape *a, const prox_shape *b)
     prox_query_center_size(b, &cb, &sb);
     return fmax(prox_v3_dist(ca, cb), fmax(sa, sb));
 }
+
+/* A polytope against a curved body: both validated in the call's order (the polytope as it is
+ * built, once), then the projections and feature pairs of distance/poly_body.c, answered in the
+ * call's order of the pair; *ba, *bb the two bodies as the support-function engine takes them (a box
+ * as its frame). Returns the outcome (PROX_PB_*), or -1 with r->status set. The pair's scale is the
+ * engine's, max(|cA - cB|, size_A, size_B). */
+static int poly_body_fast(const prox_shape *a, const prox_shape *b, prox_distance_result *r, prox_body *ba,
+                          prox_body *bb)
+{
+    int first = kind_poly(a->kind);
+    const prox_shape *ps = first ? a : b;
+    prox_polytope P;
+    prox_vec3 cp;
+    prox_status st = first ? prox_polytope_checked(a, &P, &cp) : prox_shape_validate(a);
+    if (st == PROX_OK) st = first ? prox_shape_validate(b) : prox_polytope_checked(b, &P, &cp);
+    *r = (prox_distance_result){0};
+    if ((r->status = st) != PROX_OK) return -1;
+    int box = ps->kind == PROX_SHAPE_BOX || ps->kind == PROX_SHAPE_RPP;
+    prox_body body = prox_body_make(first ? b : a), poly = box ? prox_body_make(ps) : prox_body_of_polytope(&P, cp);
+    *ba = first ? poly : body, *bb = first ? body : poly;
+    double S = fmax(prox_v3_dist(cp, body.c), fmax(P.size, body.size));
+    int v = prox_poly_body_fast(&P, cp, &body, S, r);
+    if (!first) *r = mirror_d(*r);
+    return v;
+}
+
+static prox_distance_result poly_body_distance(const prox_shape *a, const prox_shape *b)
+{
+    prox_distance_result r;
+    prox_body ba, bb;
+    int v = poly_body_fast(a, b, &r, &ba, &bb);
+    if (v != PROX_PB_OPEN) return r; /* settled, or an invalid shape */
+    return prox_convex_distance(&ba, &bb); /* never coaxial: a polytope is no solid of revolution */
+}
+
+/* A disjoint pair from the fast path, with its enclosure (core/signed_bounds.c); an overlapping or
+ * unsettled one from the engine. */
+static prox_signed_result poly_body_signed(const prox_shape *a, const prox_shape *b)
+{
+    prox_distance_result d;
+    prox_body ba, bb;
+    int v = poly_body_fast(a, b, &d, &ba, &bb);
+    prox_signed_result r = {0};
+    if ((r.status = d.status) != PROX_OK) return r;
+    if (v != PROX_PB_DISJOINT) return convex_signed_bodies(&ba, &bb);
+    r = prox_signed_from_disjoint(&d);
+    prox_body_signed_bounds(&ba, &bb, &r);
+    return r;
+}
+
+/* ---- public queries ---- */
 
 PROX_API double prox_shape_pair_scale(const prox_shape *a, const prox_shape *b)
 {
@@ -332,7 +396,9 @@ PROX_API prox_distance_result prox_shape_distance(const prox_shape *a, const pro
     }
     default: break;
     }
-    if (route_shapes(a, b) == ROUTE_POLY) return poly_distance(a, b); /* validates as it builds */
+    route rt = route_shapes(a, b);
+    if (rt == ROUTE_POLY) return poly_distance(a, b); /* validates as it builds */
+    if (rt == ROUTE_POLY_BODY) return poly_body_distance(a, b);
     if ((r.status = validate2(a, b)) != PROX_OK) return r;
     return convex_distance(a, b);
 }
@@ -361,7 +427,9 @@ PROX_API prox_signed_result prox_shape_signed_distance(const prox_shape *a, cons
     }
     default: break;
     }
-    if (route_shapes(a, b) == ROUTE_POLY) return poly_signed(a, b); /* validates as it builds */
+    route rt = route_shapes(a, b);
+    if (rt == ROUTE_POLY) return poly_signed(a, b); /* validates as it builds */
+    if (rt == ROUTE_POLY_BODY) return poly_body_signed(a, b);
     if ((r.status = validate2(a, b)) != PROX_OK) return r;
     return convex_signed(a, b);
 }

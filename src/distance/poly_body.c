@@ -1,0 +1,163 @@
+/* A polytope (BOX, RPP, RHP/HEX, WED, ARB) against a curved body (RCC, TRC, REC, ELL): the distance by
+ * alternating projections and the feature pairs they land on, certified by weak duality; the BOX-RCC
+ * fast path of box_rcc.c (br_fast) carried over to any convex polytope and any body with an exact
+ * closest point (core/body.h).
+ *
+ * Every pair (x in P, y in B) bounds the distance from above by |y - x| and every unit n from below
+ * by gap(n) = -h_B(-n) - h_P(n) (weak duality; Gilbert, Johnson & Keerthi 1988): a pair whose own
+ * direction n = (y - x) / |y - x| has gap(n) >= |y - x| - PROX_TOL_CERT S is the closest pair to a
+ * few ulps of S, the certificate of every disjoint answer in prox. A closest pair lies on a corner, an
+ * edge or the interior of a face of P:
+ * - an edge x(t) = a + t (b - a), t in [0, 1]: the distance from x(t) to the convex body is convex in t
+ *   and G(t) = (x(t) - P_B(x(t))).(b - a) (half its squared derivative; P_B the closest point of B) is
+ *   continuous and nondecreasing, so the closest pair is at the root of G or at an end (regula falsi
+ *   with the Illinois modification);
+ * - a face with outward normal n: B's point lowest along n (its support point at -n), when its foot
+ *   on the face's plane lies in the face; otherwise the closest pair lies on the face's border;
+ * - a corner: the closest point of B to it, which the projections compute.
+ * A projection or a feature pair that lands in both solids (to PROX_TOL_TOUCH S, as the engine checks
+ * its common points) is a common point. What the projections and the feature pairs do not settle
+ * goes to the certified support-function engine (src/sat/convex.c), so the answer is never weaker
+ * than its: a round that comes no nearer than the last (the feature pair solved, its certificate
+ * short: a corner or a rim 1e-8 S from the other body knows the normal only to eps S / 1e-8 S, where
+ * the engine searches the kinks), PB_ROUNDS rounds, or a pair whose gap(n) stays negative (most
+ * likely overlapping: the engine's GJK decides sooner than the projections' slow approach). */
+#include <float.h>
+
+#include "core/body.h"
+#include "core/tol.h"
+#include "distance/poly_internal.h"
+#include "prox/query.h"
+
+#define PB_ROUNDS 8     /* rounds of projections before the engine takes over */
+#define PB_NEG_ROUNDS 2 /* rounds after which a negative gap(n) gives up (the pair most likely overlaps) */
+
+/* gap(n) = -h_B(-n) - h_P(n), the lower bound of the distance along the unit n (P centred). */
+static double pb_gap(const prox_polytope *p, const prox_body *b, prox_vec3 n)
+{
+    return -prox_body_support(b, prox_v3_neg(n)) - prox_polytope_hc(p, n);
+}
+
+/* G(t) = (x(t) - P_B(x(t))).e at x(t) = a + t e, with x and y = P_B(x). */
+static double pb_edge_g(const prox_body *b, prox_vec3 a, prox_vec3 e, double t, prox_vec3 *x, prox_vec3 *y)
+{
+    *x = prox_v3_mad(a, t, e);
+    *y = prox_body_closest(b, *x);
+    return prox_v3_dot(prox_v3_sub(*x, *y), e);
+}
+
+/* The segment [a, c] against the body: the root of G by regula falsi (Illinois; Dowell and Jarratt
+ * 1971) from t0, to a bracket a few ulps wide, or an end. Returns |y - x| of the pair (x on the
+ * segment, y on B). */
+static double pb_edge(const prox_body *b, prox_vec3 a, prox_vec3 c, double t0, prox_vec3 *x, prox_vec3 *y)
+{
+    prox_vec3 e = prox_v3_sub(c, a);
+    double lo = 0.0, hi = 1.0, glo = pb_edge_g(b, a, e, lo, x, y);
+    if (glo >= 0.0) return prox_v3_dist(*x, *y);
+    double ghi = pb_edge_g(b, a, e, hi, x, y);
+    if (ghi <= 0.0) return prox_v3_dist(*x, *y);
+    double t = t0 > lo && t0 < hi ? t0 : 0.5;
+    for (int it = 0, side = 0; it < 100; ++it) {
+        double g = pb_edge_g(b, a, e, t, x, y);
+        if (g == 0.0) break;
+        if (g < 0.0) {
+            lo = t, glo = g;
+            if (side == -1) ghi *= 0.5; /* the same end twice: halve the other's value */
+            side = -1;
+        } else {
+            hi = t, ghi = g;
+            if (side == 1) glo *= 0.5;
+            side = 1;
+        }
+        if (hi - lo <= 4.0 * DBL_EPSILON) break;
+        double tn = lo - glo * (hi - lo) / (ghi - glo);
+        t = tn > lo && tn < hi ? tn : 0.5 * (lo + hi);
+    }
+    return prox_v3_dist(*x, *y);
+}
+
+/* Face f against the body: B's point lowest along the face's normal and its foot, when that lies in
+ * the face; else the nearest pair of the face's border edges. */
+static double pb_face(const prox_polytope *p, const prox_body *b, int f, prox_vec3 *x, prox_vec3 *y)
+{
+    prox_vec3 n = p->n[f], low = prox_body_support_point(b, prox_v3_neg(n));
+    double h = prox_v3_dot(n, low) - p->d[f];
+    if (h > 0.0 && prox_polytope_face_foot(p, f, low, x)) {
+        *y = low;
+        return prox_v3_dist(*x, *y);
+    }
+    double best = INFINITY;
+    int m = p->fnv[f];
+    for (int k = 0; k < m; ++k) {
+        prox_vec3 u, v;
+        double d = pb_edge(b, p->v[p->fv[f][k]], p->v[p->fv[f][k + 1 < m ? k + 1 : 0]], 0.5, &u, &v);
+        if (d < best) best = d, *x = u, *y = v;
+    }
+    return best;
+}
+
+/* Is (x in P, y in B, d = |y - x| > 0) its own certificate? *gap receives gap(n). */
+static int pb_certified(const prox_polytope *p, const prox_body *b, prox_vec3 x, prox_vec3 y, double d, double S,
+                        double *gap)
+{
+    *gap = pb_gap(p, b, prox_v3_scale(prox_v3_sub(y, x), 1.0 / d));
+    return *gap >= d - PROX_TOL_CERT * S;
+}
+
+/* The result of a certified pair, moved back by o. */
+static int pb_disjoint(prox_vec3 x, prox_vec3 y, double d, double gap, prox_vec3 o, prox_distance_result *r)
+{
+    r->intersect = 0, r->distance = d, r->certificate_gap = gap, r->certified = 1;
+    r->p1 = prox_v3_add(x, o), r->p2 = prox_v3_add(y, o);
+    return PROX_PB_DISJOINT;
+}
+
+/* The result of a common point (checked in both solids), moved back by o. */
+static int pb_meet(prox_vec3 c, prox_vec3 o, prox_distance_result *r)
+{
+    r->intersect = 1, r->distance = 0.0, r->certified = 1;
+    r->p1 = r->p2 = prox_v3_add(c, o);
+    return PROX_PB_MEET;
+}
+
+int prox_poly_body_fast(const prox_polytope *p, prox_vec3 cp, const prox_body *body, double S, prox_distance_result *r)
+{
+    prox_body b = *body;
+    b.c = prox_v3_sub(body->c, cp); /* relative to the polytope's reference point */
+    double tol8 = 2.0 * PROX_QUERY_REL_TOL * S, touch = PROX_TOL_TOUCH * S, gap;
+    /* cheap common points first: each body's reference point (inside it) in the other */
+    if (prox_body_contains(&b, prox_v3(0, 0, 0), 0.0)) return pb_meet(prox_v3(0, 0, 0), cp, r);
+    if (prox_polytope_contains(p, b.c, 0.0)) return pb_meet(b.c, cp, r);
+    prox_vec3 y = prox_body_closest(&b, prox_v3(0, 0, 0));
+    double last = INFINITY; /* the nearest pair so far: a round that comes no nearer has stalled */
+    for (int it = 0; it < PB_ROUNDS; ++it) {
+        prox_vec3 x;
+        int i, j;
+        double t;
+        int feat = prox_polytope_closest_feature(p, y, &x, &i, &j, &t);
+        prox_vec3 q = feat == PROX_POLY_INSIDE ? y : prox_body_closest(&b, x);
+        if (feat == PROX_POLY_INSIDE || (q.x == x.x && q.y == x.y && q.z == x.z)) { /* a common point */
+            prox_vec3 c = feat == PROX_POLY_INSIDE ? y : x;
+            if (!prox_polytope_contains(p, c, touch) || !prox_body_contains(&b, c, touch)) return PROX_PB_OPEN;
+            return pb_meet(c, cp, r);
+        }
+        double d = prox_v3_dist(x, q);
+        if (!(d > 0.0)) return PROX_PB_OPEN;
+        if (pb_certified(p, &b, x, q, d, S, &gap)) return gap > tol8 ? pb_disjoint(x, q, d, gap, cp, r) : PROX_PB_OPEN;
+        if (it >= PB_NEG_ROUNDS && gap < 0.0) return PROX_PB_OPEN;
+        /* the feature pair the projection landed on, whose pair is the next round's start when nearer */
+        prox_vec3 u, v;
+        double e = feat == PROX_POLY_FACE ? pb_face(p, &b, i, &u, &v)
+                   : feat == PROX_POLY_EDGE ? pb_edge(&b, p->v[i], p->v[j], t, &u, &v) : INFINITY;
+        if (e < d) {
+            if (!(e > 0.0)) /* the feature pair met: its point in both solids is a common point */
+                return prox_polytope_contains(p, u, touch) && prox_body_contains(&b, u, touch) ? pb_meet(u, cp, r) : PROX_PB_OPEN;
+            if (pb_certified(p, &b, u, v, e, S, &gap)) return gap > tol8 ? pb_disjoint(u, v, e, gap, cp, r) : PROX_PB_OPEN;
+            q = v, d = e;
+        }
+        if (!(d < last)) return PROX_PB_OPEN;
+        last = d;
+        y = q;
+    }
+    return PROX_PB_OPEN;
+}
