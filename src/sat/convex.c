@@ -1683,6 +1683,19 @@ static prox_signed_result signed_scaled(cvx *s, prox_convex_info *info, gjk_out 
 
 static int gjk_certified(const cvx *s, const gjk_out *g, cvx_answer *r);
 static int newton_certified(cvx *s, const gjk_out *g, cvx_answer *r);
+static int smooth_certified(cvx *s, cvx_answer *r);
+
+/* A disjoint pair certified early: the pair along its own direction, and that direction the normal. */
+static prox_signed_result signed_early(cvx *s, prox_convex_info *info, const cvx_answer *e)
+{
+    (void)s;
+    atomic_fetch_add(&cvx_gjk_cert, 1);
+    prox_signed_result r = {0};
+    r.status = PROX_OK;
+    r.sd = e->upper, r.normal = e->n, r.p1 = e->p1, r.p2 = e->p2;
+    info->certified = 1, info->lower = e->lower, info->upper = e->upper;
+    return r;
+}
 
 /* The signed answer of a scaled pair: a disjoint pair first tries the distance query's cheap
  * certificates (GJK stopped at CVX_GJK_LOOSE, Newton and the kinks near its direction; then GJK to
@@ -1691,9 +1704,10 @@ static int newton_certified(cvx *s, const gjk_out *g, cvx_answer *r);
 static prox_signed_result signed_run(const prox_body *a, const prox_body *b, cvx *s, prox_convex_info *info, int full)
 {
     if (full) return signed_scaled(s, info, gjk_run(s), 1);
+    cvx_answer e;
+    if (smooth_certified(s, &e)) return signed_early(s, info, &e);
     s->gjk_rel = CVX_GJK_LOOSE, s->near = CVX_NEAR_LOOSE;
     gjk_out g = gjk_run(s);
-    cvx_answer e;
     int early = g.verdict == 1 && (gjk_certified(s, &g, &e) || newton_certified(s, &g, &e));
     if (!early && g.verdict == 1) { /* to rounding, from the start */
         prox_vec3 o;
@@ -1703,12 +1717,7 @@ static prox_signed_result signed_run(const prox_body *a, const prox_body *b, cvx
         early = g.verdict == 1 && (gjk_certified(s, &g, &e) || newton_certified(s, &g, &e));
     }
     if (!early) return signed_scaled(s, info, g, 0);
-    atomic_fetch_add(&cvx_gjk_cert, 1);
-    prox_signed_result r = {0};
-    r.status = PROX_OK;
-    r.sd = e.upper, r.normal = e.n, r.p1 = e.p1, r.p2 = e.p2;
-    info->certified = 1, info->lower = e.lower, info->upper = e.upper;
-    return r;
+    return signed_early(s, info, &e);
 }
 
 static prox_signed_result signed_entry(const prox_body *a, const prox_body *b, prox_convex_info *info, int full)
@@ -1842,6 +1851,22 @@ static int newton_certified(cvx *s, const gjk_out *g, cvx_answer *r)
     return pair_certified(s, x, y, r);
 }
 
+/* A pair with no kinks (ELL and SPH: phi smooth everywhere) whose centres' direction separates them
+ * (phi < 0 there): Newton on the sphere from that direction, where the Riemannian Hessian is positive
+ * definite (phi < 0) and the step quadratic near the optimum, then the support points there, certified
+ * along their own direction; no GJK at all. */
+static int smooth_certified(cvx *s, cvx_answer *r)
+{
+    double dn = prox_v3_norm(s->delta);
+    if (s->nk != 0 || !(dn > 0.0)) return 0;
+    prox_vec3 d = prox_v3_scale(s->delta, 1.0 / dn);
+    if (!(phi_eval(s, d) < 0.0)) return 0;
+    cell_newton(s, d);
+    prox_vec3 x, y;
+    support_points(s, s->best_d, &x, &y);
+    return pair_certified(s, x, y, r);
+}
+
 /* The distance query. mode CVX_FAST: GJK stopped at a relative gap of CVX_GJK_LOOSE (it converges
  * only linearly on curved bodies: to rounding it took ~23 iterations a pair on the bench's curved
  * pairs, stopped there ~14), then Newton from its best direction (quadratic on a smooth contact), the
@@ -1850,6 +1875,18 @@ static int newton_certified(cvx *s, const gjk_out *g, cvx_answer *r)
  * to rounding, its own certificate, Newton and the kinks within CVX_NEAR_GJK, then the full search.
  * CVX_FULL: GJK to rounding and the full search (the reference of the tests). */
 enum { CVX_FAST, CVX_TIGHT, CVX_FULL };
+
+/* The answer of the unit-scale pair in the caller's units and frame. */
+static prox_distance_result distance_scaled_back(prox_distance_result *r, prox_convex_info *info, prox_vec3 o, double f)
+{
+    r->distance /= f;
+    r->certificate_gap /= f;
+    r->p1 = to_abs(o, f, r->p1);
+    r->p2 = to_abs(o, f, r->p2);
+    info->lower /= f;
+    info->upper /= f;
+    return *r;
+}
 
 static prox_distance_result distance_run(const prox_body *a, const prox_body *b, prox_convex_info *info, int mode)
 {
@@ -1863,9 +1900,16 @@ static prox_distance_result distance_run(const prox_body *a, const prox_body *b,
     prox_vec3 o;
     double f;
     pair_make(a, b, &s, &o, &f);
+    cvx_answer ans = {0};
+    if (mode == CVX_FAST && smooth_certified(&s, &ans)) {
+        atomic_fetch_add(&cvx_gjk_cert, 1);
+        info->certified = r.certified = 1;
+        r.distance = ans.upper, r.p1 = ans.p1, r.p2 = ans.p2, r.certificate_gap = ans.lower;
+        info->lower = ans.lower, info->upper = ans.upper;
+        return distance_scaled_back(&r, info, o, f);
+    }
     if (mode == CVX_FAST) s.gjk_rel = CVX_GJK_LOOSE, s.near = CVX_NEAR_LOOSE;
     gjk_out g = gjk_run(&s);
-    cvx_answer ans = {0};
     int early = 0;
     if (mode == CVX_FAST && g.verdict == 1) {
         early = gjk_certified(&s, &g, &ans) || newton_certified(&s, &g, &ans);
@@ -1884,13 +1928,7 @@ static prox_distance_result distance_run(const prox_body *a, const prox_body *b,
         r.certified = info->certified;
         info->lower = ans.lower, info->upper = ans.upper;
     } else common_point(&s, &g, &r, info);
-    r.distance /= f;
-    r.certificate_gap /= f;
-    r.p1 = to_abs(o, f, r.p1);
-    r.p2 = to_abs(o, f, r.p2);
-    info->lower /= f;
-    info->upper /= f;
-    return r;
+    return distance_scaled_back(&r, info, o, f);
 }
 
 prox_distance_result prox_convex_distance_ex(const prox_body *a, const prox_body *b, prox_convex_info *info)
