@@ -630,6 +630,31 @@ static void test_fuzz_box_box_unit_normal(void **state)
     }
 }
 
+/* fuzz/crashes/pairs-wed-plate-witness-*: a wedge whose triangle has a side 1e-10 of its height (a
+ * sliver) 1.4e-10 S deep in a plate (a box with an edge 1.2e-7 of the others). The polytope solver's
+ * depth was right (within 1e-11 S of the support-function method's) but its witnesses, from the two
+ * support features along the normal, missed p2 - p1 = sd n by 2.1e-8 S. Witnesses off by more than the
+ * touching band hand the pair to the support-function engine. */
+static void test_fuzz_wed_plate_witness(void **state)
+{
+    (void)state;
+    prox_wed w = {prox_v3(1.2027122116816206e-153, 2.4869818447791177e-91, 3.6579625062864334e-86),
+                  prox_v3(1.1319592074145408e-71, 1.5092143548155682e-154, 5.5408093153074158e-48),
+                  prox_v3(6.35233319397365e-67, 6.3070501717360453e-38, 1.178477528557165e-47),
+                  prox_v3(-4.7641959697253089e-38, 4.7982198275968675e-67, 9.7330104448082804e-62)};
+    prox_box x = {prox_v3(0, 0, 1.3568136935417313e-153),
+                  {prox_v3(2.3832323009691365e-38, 1.0311923825665205e-71, 6.8159077463737114e-38),
+                   prox_v3(-2.7993032747598162e-72, 5.9385647448681623e-38, -8.0057769747949401e-72),
+                   prox_v3(-8.8910897635977534e-45, -3.6593981891289865e-84, 3.108834964307688e-45)}};
+    prox_shape a = prox_shape_from_wed(w), b = prox_shape_from_box(x);
+    double S;
+    for (int k = 0; k < 2; ++k) {
+        prox_signed_result r = signed_checked(k ? &b : &a, k ? &a : &b, 1e-12, &S);
+        assert_true(r.sd < 0.0 && r.sd > -1e-9 * S); /* shallow */
+        assert_true(r.sd_lower <= r.sd && r.sd <= r.sd_upper);
+    }
+}
+
 /* fuzz/crashes/pairs-axis-support-*: an ellipsoid of size 1 at the origin against a cylinder 1e50 away
  * whose axis points exactly along the line of centres. The cylinder's support point along its axis
  * took the radial direction from a residual at rounding level that lay along the axis itself, which
@@ -727,6 +752,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_rhp_needle_ell),
         cmocka_unit_test(test_fuzz_box_rcc_unit_normal),
         cmocka_unit_test(test_fuzz_box_box_unit_normal),
+        cmocka_unit_test(test_fuzz_wed_plate_witness),
         cmocka_unit_test(test_fuzz_rhp_lean_needle),
         cmocka_unit_test(test_fuzz_thin_box_arb),
         cmocka_unit_test(test_fuzz_flat_cone_needle),
