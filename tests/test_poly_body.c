@@ -1,6 +1,7 @@
 /* A polytope (BOX, RPP, RHP, WED, ARB) against a curved body (RCC, TRC, REC, ELL): the public distance
  * and signed distance, which take the projections and feature pairs of src/distance/poly_body.c
- * (every such pair but BOX-RCC and RPP-RCC, which have their own solver), against the full
+ * (every such pair but BOX-RCC and RPP-RCC: box_rcc.c, with the engine behind the disjoint answers it
+ * leaves uncertified, 30-40 % of the pairs 1e-10 .. 1e-3 S apart), against the full
  * support-function engine (prox_convex_distance_full: its local search and every candidate normal),
  * in both orders, on near pairs (disjoint and overlapping), pairs moved 1e-10 .. 1e-3 S apart along
  * the engine's normal, touching pairs, and near pairs 1e6 sizes from the origin.
@@ -128,7 +129,7 @@ static void run_family(int fam, int per_kind, uint64_t seed)
     stats st = {0};
     for (size_t i = 0; i < sizeof k_poly / sizeof k_poly[0]; ++i)
         for (size_t j = 0; j < sizeof k_body / sizeof k_body[0]; ++j)
-            for (int n = 0; n < per_kind && !(k_body[j] == PROX_SHAPE_RCC && i < 2); ++n) { /* BOX/RPP-RCC: box_rcc.c */
+            for (int n = 0; n < per_kind; ++n) {
                 prox_shape a, b;
                 int swap = n & 1;
                 make_pair(&g, fam, swap ? k_body[j] : k_poly[i], swap ? k_poly[i] : k_body[j], &a, &b);

@@ -627,12 +627,15 @@ prox_distance_result prox_box_rcc_distance_enum(const prox_box *a, const prox_rc
     return r;
 }
 
-/* 1 when x lies in both closed solids (no tolerance): a checked common point. */
-static int br_in_both(const prox_bframe *B, const prox_cyl *c, prox_vec3 x)
+/* 1 when x lies in both solids to tol: a checked common point (tol = PROX_TOL_TOUCH S, the touching
+ * band, as the support-function engine checks its common points: a touching pair's solids may share
+ * no point at all in floating point). */
+static int br_in_both(const prox_bframe *B, const prox_cyl *c, prox_vec3 x, double tol)
 {
     double l[3];
     prox_bframe_local(B, x, l);
-    return fabs(l[0]) <= B->h[0] && fabs(l[1]) <= B->h[1] && fabs(l[2]) <= B->h[2] && prox_cyl_contains(c, x, 0.0);
+    return fabs(l[0]) <= B->h[0] + tol && fabs(l[1]) <= B->h[1] + tol && fabs(l[2]) <= B->h[2] + tol &&
+           prox_cyl_contains(c, x, tol);
 }
 
 /* The distance: a cheap common point (br_quick_common), else the fast path (br_fast: a common point
@@ -661,7 +664,7 @@ PROX_API prox_distance_result prox_box_rcc_distance(const prox_box *a, const pro
     }
     if (r.intersect) {
         r.p1 = r.p2 = x;
-        r.certified = br_in_both(&B, &c, x);
+        r.certified = br_in_both(&B, &c, x, PROX_TOL_TOUCH * S);
     }
     r.p1 = prox_v3_add(r.p1, o);
     r.p2 = prox_v3_add(r.p2, o);

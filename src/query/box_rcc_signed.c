@@ -5,6 +5,8 @@
 #include "core/box.h"
 #include "prox/pairs.h"
 #include "prox/support.h"
+#include "query/query_internal.h"
+#include "sat/convex.h"
 #include "sat/sat_internal.h"
 
 static prox_signed_result box_rcc_signed(const prox_box *a, const prox_rcc *b);
@@ -19,10 +21,20 @@ PROX_API prox_signed_result prox_box_rcc_signed_distance(const prox_box *a, cons
     return r;
 }
 
+prox_distance_result prox_query_box_rcc_distance(const prox_box *a, const prox_rcc *b)
+{
+    prox_distance_result d = prox_box_rcc_distance(a, b);
+    if (d.status != PROX_OK || d.intersect || d.certified) return d;
+    prox_shape sa = prox_shape_from_box(*a), sb = prox_shape_from_rcc(*b);
+    prox_body ba = prox_body_make(&sa), bb = prox_body_make(&sb);
+    prox_distance_result e = prox_convex_distance(&ba, &bb);
+    return e.certified && !e.intersect ? e : d;
+}
+
 static prox_signed_result box_rcc_signed(const prox_box *a, const prox_rcc *b)
 {
     prox_signed_result r = {0};
-    prox_distance_result d = prox_box_rcc_distance(a, b);
+    prox_distance_result d = prox_query_box_rcc_distance(a, b);
     r.status = d.status;
     if (r.status != PROX_OK) return r;
     if (!d.intersect && d.distance > 0.0) { /* disjoint: sd = distance, unit normal from p1 to p2 */

@@ -192,7 +192,7 @@ static prox_distance_result dist_canon(const norm_shape *a, const norm_shape *b)
     const prox_shape *sa = a->s, *sb = b->s;
     switch (a->kind * 4 + b->kind) {
     case PROX_SHAPE_BOX * 4 + PROX_SHAPE_BOX: return prox_box_box_distance(&a->box, &b->box);
-    case PROX_SHAPE_BOX * 4 + PROX_SHAPE_RCC: return prox_box_rcc_distance(&a->box, &sb->u.rcc);
+    case PROX_SHAPE_BOX * 4 + PROX_SHAPE_RCC: return prox_query_box_rcc_distance(&a->box, &sb->u.rcc);
     case PROX_SHAPE_BOX * 4 + PROX_SHAPE_SPH: return prox_box_sph_distance(&a->box, &sb->u.sph);
     case PROX_SHAPE_RCC * 4 + PROX_SHAPE_RCC: return rcc_rcc_distance(&sa->u.rcc, &sb->u.rcc);
     case PROX_SHAPE_RCC * 4 + PROX_SHAPE_SPH: return prox_rcc_sph_distance(&sa->u.rcc, &sb->u.sph);

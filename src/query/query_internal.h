@@ -20,6 +20,12 @@ prox_signed_result prox_query_sph_signed(const prox_shape *b, const prox_sph *s,
 prox_distance_result prox_query_sph_distance(const prox_shape *b, const prox_sph *s, int sphere_first);
 prox_test_result prox_query_sph_test(const prox_shape *b, const prox_sph *s, int sphere_first);
 
+/* BOX-RCC distance (box_rcc_signed.c): prox_box_rcc_distance, whose disjoint answer a pair 1e-10 ..
+ * 1e-3 S apart often leaves short of its certificate (a corner or a rim that near the other body
+ * knows the normal only to eps S over the gap: 30-40 % of such random pairs), then the support-function
+ * engine's, which searches the kinks, when that one is certified and disjoint. */
+prox_distance_result prox_query_box_rcc_distance(const prox_box *a, const prox_rcc *b);
+
 /* Centre and size of a valid shape, as prox_shape_center and prox_shape_size give them, without
  * building the generic body (the pair scale of every decision tolerance). */
 void prox_query_center_size(const prox_shape *s, prox_vec3 *c, double *size);
