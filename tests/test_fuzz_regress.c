@@ -655,6 +655,35 @@ static void test_fuzz_wed_plate_witness(void **state)
     }
 }
 
+/* fuzz/crashes/pairs-sliver-wed-speck-box-*: a sliver wedge (a side 5.5e-48 against a height of
+ * 4.8e-38) and a box 6.4e-67 across 1.1e-42 from it (1.4e-5 S). In the pair's frame the speck's plane
+ * offsets are lost to rounding: the polytope solver took the pair as meeting in one order (distance 0
+ * against 1.08e-42 the other way), and its signed distance came out short by the sliver's thickness
+ * (8e-11 S) with witnesses off the wedge. A common point is checked again in each polytope's own
+ * frame, and a disjoint signed answer its enclosure does not certify goes to the engine. */
+static void test_fuzz_sliver_wed_speck_box(void **state)
+{
+    (void)state;
+    prox_wed w = {prox_v3(1.2027122116816206e-153, 2.4869818447791177e-91, 3.6579625062864334e-86),
+                  prox_v3(1.1319592074145408e-71, 1.5092143548259025e-154, 5.5408093153074158e-48),
+                  prox_v3(6.35233319397365e-67, 6.2335817748096524e-38, 1.178477528557165e-47),
+                  prox_v3(-4.7641959697253089e-38, 4.8547711862809753e-67, 9.7330104448082838e-62)};
+    prox_box x = {prox_v3(1.2773025056592557e-153, 5.1534160668080408e-62, 1.084642096542917e-42),
+                  {prox_v3(4.0569736951545834e-86, 1.3141763152352841e-71, 3.6446862612457667e-86),
+                   prox_v3(-9.2727588351129916e-82, -1.7789959029201508e-81, 6.3523221598895622e-67),
+                   prox_v3(4.58332338651024e-72, -1.41491078479297e-86, 6.6904749722551006e-87)}};
+    prox_shape a = prox_shape_from_wed(w), b = prox_shape_from_box(x);
+    double S;
+    prox_distance_result ab = prox_shape_distance(&a, &b), ba = prox_shape_distance(&b, &a);
+    assert_int_equal(ab.status, PROX_OK);
+    assert_false(ab.intersect || ba.intersect);
+    for (int k = 0; k < 2; ++k) {
+        prox_signed_result r = signed_checked(k ? &b : &a, k ? &a : &b, 1e-12, &S);
+        assert_true(r.certified);
+        assert_true(fabs(r.sd - ab.distance) <= 1e-12 * S && fabs(ba.distance - ab.distance) <= 1e-12 * S);
+    }
+}
+
 /* fuzz/crashes/pairs-axis-support-*: an ellipsoid of size 1 at the origin against a cylinder 1e50 away
  * whose axis points exactly along the line of centres. The cylinder's support point along its axis
  * took the radial direction from a residual at rounding level that lay along the axis itself, which
@@ -753,6 +782,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_box_rcc_unit_normal),
         cmocka_unit_test(test_fuzz_box_box_unit_normal),
         cmocka_unit_test(test_fuzz_wed_plate_witness),
+        cmocka_unit_test(test_fuzz_sliver_wed_speck_box),
         cmocka_unit_test(test_fuzz_rhp_lean_needle),
         cmocka_unit_test(test_fuzz_thin_box_arb),
         cmocka_unit_test(test_fuzz_flat_cone_needle),
