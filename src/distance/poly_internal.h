@@ -15,8 +15,7 @@
 /* Exact distance: disjoint, the nearest vertex-face, face-vertex or edge-edge pair, p1 on A and p2
  * on B, certified by the gap along (p2 - p1) / |p2 - p1|; overlapping (no separating face normal or
  * edge-edge cross product), intersect = 1, distance 0 and p1 = p2 a point of both solids (the mean
- * of the corners of the intersection found), certified when it lies in both to PROX_TOL_TOUCH S, each
- * checked in its own frame. */
+ * of the corners of the intersection found), certified when it lies in both to PROX_TOL_TOUCH S. */
 prox_distance_result prox_poly_distance(const prox_polytope *a, prox_vec3 ca, const prox_polytope *b, prox_vec3 cb);
 
 /* Exact signed distance: disjoint, the distance with normal (p2 - p1) / |p2 - p1|; overlapping,

@@ -949,15 +949,6 @@ static prox_distance_result distance_entry(const prox_polytope *a, prox_vec3 ca,
         r = (prox_distance_result){0};
         distance_exhaustive(&A, &B, Dp, S, &r);
     }
-    /* a common point is certified in each polytope's own frame (from the placed point, relative to A's
-     * reference point: no absolute coordinate's rounding enters): in the pair's frame a speck 1e-25 of
-     * the pair's scale loses its planes' offsets to rounding (a box 1e-67 across, 1.4e-5 S from a
-     * sliver wedge, was taken as meeting it) */
-    if (r.intersect && r.certified) {
-        prox_vec3 ya = prox_v3_scale(r.p1, 1.0 / u);
-        double tol = PROX_TOL_TOUCH * S / u;
-        r.certified = prox_polytope_contains(a, ya, tol) && prox_polytope_contains(b, prox_v3_sub(ya, D), tol);
-    }
     r.distance /= u;
     r.certificate_gap /= u;
     r.p1 = unplace(r.p1, u, ca);

@@ -254,6 +254,14 @@ static prox_distance_result poly_distance(const prox_shape *a, const prox_shape 
     prox_distance_result r = {0};
     if ((r.status = polys(a, b, &pa, &ca, &pb, &cb)) != PROX_OK) return r;
     r = prox_poly_distance(&pa, ca, &pb, cb);
+    if (r.intersect) {
+        /* the common point checked again in each polytope's own frame: in the pair's frame a speck
+         * 1e-25 of the pair's scale loses its planes' offsets to rounding (a box 1e-67 across,
+         * 1.4e-5 S from a sliver wedge, was taken as meeting it) */
+        double tol = PROX_TOL_TOUCH * fmax(prox_v3_dist(ca, cb), fmax(pa.size, pb.size));
+        if (!prox_polytope_contains(&pa, prox_v3_sub(r.p1, ca), tol) || !prox_polytope_contains(&pb, prox_v3_sub(r.p1, cb), tol))
+            return convex_distance(a, b);
+    }
     return r.certified ? r : convex_distance(a, b);
 }
 

@@ -1185,22 +1185,18 @@ static cvx_answer finish_disjoint(cvx *s, const gjk_out *g)
     prox_vec3 c[24];
     int nc = answer_candidates(s, c, 24);
     cvx_answer r = {-s->best_phi, INFINITY, s->best_d, {0, 0, 0}, {0, 0, 0}};
-    cvx_answer below = r; /* the nearest pair under the bound, kept for when no other is left */
     double align = INFINITY, tie = PROX_TOL_SNAP * s->S, floor = -phi_eval(s, s->best_d) - PROX_TOL_CERT * s->S;
-    for (int k = 0; k < nc; ++k) {
-        prox_vec3 x = {0, 0, 0}, y = x;
-        double dk = witness_disjoint(s, c[k], &x, &y);
-        if (dk < floor) {
-            if (dk < below.upper) below.upper = dk, below.p1 = x, below.p2 = y, below.n = c[k];
-            continue;
+    for (int pass = 0; pass < 2 && !(r.upper < INFINITY); ++pass)
+        for (int k = 0; k < nc; ++k) {
+            prox_vec3 x = {0, 0, 0}, y = x;
+            double dk = witness_disjoint(s, c[k], &x, &y);
+            if (pass == 0 && dk < floor) continue;
+            double ak = prox_v3_norm(prox_v3_mad(prox_v3_sub(y, x), -dk, c[k]));
+            if (dk < r.upper - tie || (dk <= r.upper + tie && ak < align)) {
+                if (dk < r.upper) r.upper = dk;
+                align = ak, r.p1 = x, r.p2 = y, r.n = c[k];
+            }
         }
-        double ak = prox_v3_norm(prox_v3_mad(prox_v3_sub(y, x), -dk, c[k]));
-        if (dk < r.upper - tie || (dk <= r.upper + tie && ak < align)) {
-            if (dk < r.upper) r.upper = dk;
-            align = ak, r.p1 = x, r.p2 = y, r.n = c[k];
-        }
-    }
-    if (!(r.upper < INFINITY)) r = below;
     if (g && g->verdict == 1 && g->vnorm < r.upper - tie && !(g->vnorm < floor)) {
         prox_vec3 x = g->xa, y = g->xb;
         r.upper = g->vnorm, r.p1 = x, r.p2 = y, r.n = s->best_d;
@@ -1695,8 +1691,9 @@ static int newton_certified(cvx *s, const gjk_out *g, cvx_answer *r);
 static int smooth_certified(cvx *s, cvx_answer *r);
 
 /* A disjoint pair certified early: the pair along its own direction, and that direction the normal. */
-static prox_signed_result signed_early(prox_convex_info *info, const cvx_answer *e)
+static prox_signed_result signed_early(cvx *s, prox_convex_info *info, const cvx_answer *e)
 {
+    (void)s;
     atomic_fetch_add(&cvx_gjk_cert, 1);
     prox_signed_result r = {0};
     r.status = PROX_OK;
@@ -1713,7 +1710,7 @@ static prox_signed_result signed_run(const prox_body *a, const prox_body *b, cvx
 {
     if (full) return signed_scaled(s, info, gjk_run(s), 1);
     cvx_answer e;
-    if (smooth_certified(s, &e)) return signed_early(info, &e);
+    if (smooth_certified(s, &e)) return signed_early(s, info, &e);
     s->gjk_rel = CVX_GJK_LOOSE, s->near = CVX_NEAR_LOOSE;
     gjk_out g = gjk_run(s);
     int early = g.verdict == 1 && (gjk_certified(s, &g, &e) || newton_certified(s, &g, &e));
@@ -1725,7 +1722,7 @@ static prox_signed_result signed_run(const prox_body *a, const prox_body *b, cvx
         early = g.verdict == 1 && (gjk_certified(s, &g, &e) || newton_certified(s, &g, &e));
     }
     if (!early) return signed_scaled(s, info, g, 0);
-    return signed_early(info, &e);
+    return signed_early(s, info, &e);
 }
 
 static prox_signed_result signed_entry(const prox_body *a, const prox_body *b, prox_convex_info *info, int full)
@@ -1847,10 +1844,9 @@ static int gjk_certified(const cvx *s, const gjk_out *g, cvx_answer *r)
 static int newton_certified(cvx *s, const gjk_out *g, cvx_answer *r)
 {
     if (g->verdict != 1 || !(s->best_phi < 0.0)) return 0;
-    int h = s->halvings, nh = s->nhalvings;
     s->halvings = s->nhalvings = CVX_GRAD_HALVINGS; /* a step that needs more has met a kink */
     cell_newton(s, s->best_d);
-    s->halvings = h, s->nhalvings = nh;
+    s->halvings = s->nhalvings = 30;
     for (int i = 0; i < s->nk; ++i)
         if (!s->k[i].circle && kink_dist(&s->k[i], s->best_d) <= CVX_LOCAL) consider(s, s->k[i].w);
     prox_vec3 x, y;
@@ -1886,16 +1882,6 @@ static int smooth_certified(cvx *s, cvx_answer *r)
  * CVX_FULL: GJK to rounding and the full search (the reference of the tests). */
 enum { CVX_FAST, CVX_TIGHT, CVX_FULL };
 
-/* A disjoint answer into the result and the info (certified as info says). */
-static void distance_answer(prox_distance_result *r, prox_convex_info *info, const cvx_answer *ans)
-{
-    r->distance = ans->upper;
-    r->p1 = ans->p1, r->p2 = ans->p2;
-    r->certificate_gap = ans->lower;
-    r->certified = info->certified;
-    info->lower = ans->lower, info->upper = ans->upper;
-}
-
 /* The answer of the unit-scale pair in the caller's units and frame. */
 static prox_distance_result distance_scaled_back(prox_distance_result *r, prox_convex_info *info, prox_vec3 o, double f)
 {
@@ -1923,8 +1909,9 @@ static prox_distance_result distance_run(const prox_body *a, const prox_body *b,
     cvx_answer ans = {0};
     if (mode == CVX_FAST && smooth_certified(&s, &ans)) {
         atomic_fetch_add(&cvx_gjk_cert, 1);
-        info->certified = 1;
-        distance_answer(&r, info, &ans);
+        info->certified = r.certified = 1;
+        r.distance = ans.upper, r.p1 = ans.p1, r.p2 = ans.p2, r.certificate_gap = ans.lower;
+        info->lower = ans.lower, info->upper = ans.upper;
         return distance_scaled_back(&r, info, o, f);
     }
     if (mode == CVX_FAST) s.gjk_rel = CVX_GJK_LOOSE, s.near = CVX_NEAR_LOOSE;
@@ -1940,8 +1927,13 @@ static prox_distance_result distance_run(const prox_body *a, const prox_body *b,
         atomic_fetch_add(&cvx_gjk_cert, 1);
         info->certified = 1;
     } else if (g.verdict != 0 && s.best_phi < 0.0) ans = solve_disjoint(&s, &g, info);
-    if (g.verdict != 0 && s.best_phi < 0.0) distance_answer(&r, info, &ans);
-    else common_point(&s, &g, &r, info);
+    if (g.verdict != 0 && s.best_phi < 0.0) {
+        r.distance = ans.upper;
+        r.p1 = ans.p1, r.p2 = ans.p2;
+        r.certificate_gap = ans.lower;
+        r.certified = info->certified;
+        info->lower = ans.lower, info->upper = ans.upper;
+    } else common_point(&s, &g, &r, info);
     return distance_scaled_back(&r, info, o, f);
 }
 
