@@ -244,6 +244,45 @@ static prox_vec3 b_pc(const body *b, prox_vec3 d)
     return b->kind == K_TRC ? prox_cone_pc(&b->k, d) : (b->kind == K_REC ? prox_ecyl_pc(&b->e, d) : prox_ellb_pc(&b->l, d));
 }
 
+/* ---- axes along (1, 1, 1) ---- */
+
+/* A TRC and an ELL whose axis is (L, L, L): a direction d = +-w or a point on the axis leaves, after
+ * the radial part is rejected twice, a residual of three equal components, i.e. along w itself. It
+ * is rounding (core/axis.h): the support point along the axis is the cap's centre or the pole, never
+ * a "rim point" on the axis r beyond the cap, and a point on the axis has its nearest boundary point
+ * on the lateral surface or the equator at the radius, with a normal not along the axis. Lengths L
+ * from 1e-3 to 1e20 (the residual's size follows d.w's rounding). */
+static void test_axis_diagonal(void **state)
+{
+    (void)state;
+    int fails = 0;
+    for (int e = -3; e <= 20; ++e) {
+        double L = pow(10.0, e) * 1.37;
+        prox_vec3 axis = prox_v3(L, L, L), base = prox_v3(0.3 * L, 0.3 * L, 0.3 * L);
+        body bs[2] = {make_trc(&(prox_trc){base, axis, 0.6 * L, 0.3 * L}), make_ell(&(prox_ell){base, axis, 0.5 * L})};
+        for (int i = 0; i < 2; ++i) {
+            const body *b = &bs[i];
+            prox_vec3 w = i == 0 ? b->k.w : b->l.w;
+            double size = 4.0 * L, tol = 1e-12 * size;
+            for (int sg = -1; sg <= 1; sg += 2) {
+                prox_vec3 p = prox_v3_add(b->c, b_pc(b, prox_v3_scale(w, sg)));
+                fails += !b_contains(b, p, tol);
+                fails += prox_v3_norm(prox_v3_reject(prox_v3_sub(p, b->c), w)) > tol; /* on the axis */
+            }
+            for (int k = 0; k < 16; ++k) { /* points on the axis near the centre, inside */
+                double t = (k - 7.5) * 0.01 * L;
+                prox_vec3 x = prox_v3_mad(b->c, t, prox_v3(1, 1, 1)), q, n;
+                double sd = b_boundary_n(b, x, &q, &n);
+                fails += !(sd < 0.0);
+                fails += fabs(prox_v3_dist(x, q) + sd) > tol; /* q at |sd| from x */
+                fails += !b_contains(b, q, tol) || fabs(prox_v3_norm(n) - 1.0) > 1e-12;
+                fails += fabs(prox_v3_dot(n, w)) > 0.5; /* lateral or equatorial, not a cap */
+            }
+        }
+    }
+    assert_int_equal(fails, 0);
+}
+
 /* ---- random bodies ---- */
 
 static double logu(test_rng *g, double lo, double hi) { return pow(10.0, test_range(g, log10(lo), log10(hi))); }
@@ -808,6 +847,7 @@ int main(void)
         cmocka_unit_test(test_far),            cmocka_unit_test(test_invariance),
         cmocka_unit_test(test_ellipse2),
         cmocka_unit_test(test_boundary_normal),
+        cmocka_unit_test(test_axis_diagonal),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -710,6 +710,38 @@ static void test_fuzz_axis_support_point(void **state)
     assert_true(g.sd_lower <= g.sd && g.sd <= g.sd_upper);
 }
 
+/* fuzz/crashes/pairs-near-cylinder-trc-box-*: a TRC whose radii agree to 4e-10 (nearly an RCC) with
+ * its axis along (1, 1, 1), against a box 5e-33 across at the origin, which projects onto the base disk
+ * 4.3e20 below it. At the direction exactly along -w the radial part of d, rejected twice, is a residual
+ * of three equal components, i.e. along w itself: normalised, it put the rim "support point" on the axis
+ * r1 beyond the base, and GJK's pair built from it certified 2.08e20 with p1 2.8e20 outside the TRC. A
+ * radial part at rounding is d on the axis (core/axis.h); the early certificate also tests that its
+ * pair lies in the solids. The distance is the base plane's: the base's z over sqrt 3. */
+static void test_fuzz_near_cylinder_trc_box(void **state)
+{
+    (void)state;
+    const double v = 7.4770802645436046e+20;
+    prox_trc t = {prox_v3(0, 1.3548960532517148e-309, 7.4770787633437291e+20), prox_v3(v, v, v), 7.4770802617948255e+20, v};
+    prox_box x = {prox_v3(4.8578750597249806e-33, 2.4839856093816511e-91, 1.6588190376278669e-76),
+                  {prox_v3(1.3141763152749211e-71, 3.6710701810649192e-62, 1.7475541074180354e-77),
+                   prox_v3(-3.8828213118610585e-52, 0, -5.1632648146151874e-58),
+                   prox_v3(-6.4568190718651646e-39, -1.0401387832549892e-57, 4.8555856806150451e-33)}};
+    prox_shape a = prox_shape_from_trc(t), b = prox_shape_from_box(x);
+    double S, want = 7.4770787633437291e+20 / sqrt(3.0);
+    for (int k = 0; k < 2; ++k) {
+        const prox_shape *p = k ? &b : &a, *q = k ? &a : &b;
+        prox_signed_result g = signed_checked(p, q, 1e-12, &S);
+        prox_distance_result d = prox_shape_distance(p, q);
+        assert_int_equal(d.status, PROX_OK);
+        assert_near(d.distance, want, 1e-12 * S);
+        assert_near(g.sd, want, 1e-12 * S);
+        double r0 = 1e-12 * S;
+        prox_shape s1 = prox_shape_from_sph((prox_sph){d.p1, r0}), s2 = prox_shape_from_sph((prox_sph){d.p2, r0});
+        assert_true(prox_shape_distance(p, &s1).distance <= r0);
+        assert_true(prox_shape_distance(q, &s2).distance <= r0);
+    }
+}
+
 /* fuzz/crashes/pairs-ell-subnormal-axis-*: a sphere's centre a subnormal distance (3.7e-315) off an
  * ellipsoid's major axis, inside it. The point-ellipse secular equation's derivative carries
  * 1 / Z and overflowed: Newton stopped at its bracket's end and the nearest boundary point came out
@@ -795,6 +827,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_flat_cone_bar),
         cmocka_unit_test(test_fuzz_axis_support_point),
         cmocka_unit_test(test_fuzz_ell_subnormal_axis),
+        cmocka_unit_test(test_fuzz_near_cylinder_trc_box),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -6,26 +6,16 @@
  * and the slanted generator from (-hh, r1) to (hh, r2) (facet 1, the conical surface). */
 #include <math.h>
 
+#include "core/axis.h"
 #include "core/curved.h"
 #include "core/curved_normal.h"
 
-/* Component of d across the unit axis w, rejected twice (as prox_cyl_perp: one pass leaves an
- * O(eps |d|) residual along w that normalising would blow up). */
-static prox_vec3 across(prox_vec3 d, prox_vec3 w)
-{
-    prox_vec3 p = prox_v3_mad(d, -prox_v3_dot(d, w), w);
-    return prox_v3_mad(p, -prox_v3_dot(p, w), w);
-}
-
 /* The half-plane coordinates of y: t, rho and the radial unit vector *u (any perpendicular to the
- * axis when y is on it). */
+ * axis when y is on it to rounding, core/axis.h). */
 static double half_plane(const prox_cone *k, prox_vec3 y, double *rho, prox_vec3 *u)
 {
-    double t = prox_v3_dot(y, k->w);
-    prox_vec3 p = across(y, k->w);
-    *rho = prox_v3_norm(p);
-    *u = *rho > 0.0 ? prox_v3_normalize(p) : prox_v3_any_perp(k->w);
-    return t;
+    *u = prox_axis_radial(y, k->w, rho);
+    return prox_v3_dot(y, k->w);
 }
 
 prox_vec3 prox_cone_make(const prox_trc *t, prox_cone *k)
@@ -41,22 +31,22 @@ prox_vec3 prox_cone_make(const prox_trc *t, prox_cone *k)
 /* hc(d) = max(-hh d.w + r1 |P d|, hh d.w + r2 |P d|): the cone is the hull of its two rims. */
 double prox_cone_hc(const prox_cone *k, prox_vec3 d)
 {
-    double dw = prox_v3_dot(d, k->w), p = prox_v3_norm(across(d, k->w));
+    double dw = prox_v3_dot(d, k->w), p = prox_v3_norm(prox_axis_across(d, k->w));
     return fmax(-k->hh * dw + k->r1 * p, k->hh * dw + k->r2 * p);
 }
 
 /* The rim point of the larger value; on a tie (d normal to the conical surface) the middle of the
- * generator; d along the axis the centre of the supporting cap (the apex for a zero radius). */
+ * generator; d along the axis (to rounding, core/axis.h) the centre of the supporting cap (the apex
+ * for a zero radius). */
 prox_vec3 prox_cone_pc(const prox_cone *k, prox_vec3 d)
 {
-    double dw = prox_v3_dot(d, k->w);
-    prox_vec3 pd = across(d, k->w);
-    double p = prox_v3_norm(pd);
+    double dw = prox_v3_dot(d, k->w), p;
+    prox_vec3 u = prox_axis_radial(d, k->w, &p);
     if (!(p > 0.0)) return prox_v3_scale(k->w, dw > 0.0 ? k->hh : (dw < 0.0 ? -k->hh : 0.0));
     double vb = -k->hh * dw + k->r1 * p, vt = k->hh * dw + k->r2 * p;
-    if (vt > vb) return prox_v3_mad(prox_v3_scale(k->w, k->hh), k->r2 / p, pd);
-    if (vb > vt) return prox_v3_mad(prox_v3_scale(k->w, -k->hh), k->r1 / p, pd);
-    return prox_v3_scale(pd, 0.5 * (k->r1 + k->r2) / p);
+    if (vt > vb) return prox_v3_mad(prox_v3_scale(k->w, k->hh), k->r2, u);
+    if (vb > vt) return prox_v3_mad(prox_v3_scale(k->w, -k->hh), k->r1, u);
+    return prox_v3_scale(u, 0.5 * (k->r1 + k->r2));
 }
 
 /* Signed distance of (t, rho) to the line of the generator, positive outside: with the edge vector

@@ -10,6 +10,7 @@
 
 #include <math.h>
 
+#include "core/axis.h"
 #include "core/circle.h"
 #include "core/tol.h"
 #include "prox/shapes.h"
@@ -48,14 +49,8 @@ static inline prox_cyl prox_cyl_make(const prox_rcc *c, prox_vec3 origin)
 /* Centre of the cylinder in absolute coordinates (base + axis / 2). */
 static inline prox_vec3 prox_rcc_center(const prox_rcc *c) { return prox_v3_mad(c->base, 0.5, c->axis); }
 
-/* Component of d perpendicular to the axis. Rejected twice: for d nearly along the axis one pass
- * leaves an O(eps |d|) residual along w that normalising would blow up, putting a support point
- * off the cylinder by up to r eps |d| / |perp|. */
-static inline prox_vec3 prox_cyl_perp(const prox_cyl *k, prox_vec3 d)
-{
-    prox_vec3 p = prox_v3_mad(d, -prox_v3_dot(d, k->w), k->w);
-    return prox_v3_mad(p, -prox_v3_dot(p, k->w), k->w);
-}
+/* Component of d perpendicular to the axis (core/axis.h). */
+static inline prox_vec3 prox_cyl_perp(const prox_cyl *k, prox_vec3 d) { return prox_axis_across(d, k->w); }
 
 /* Centred support function hc(d) = r |d - (d.w)w| + (h/2)|d.w| (d need not be unit). */
 static inline double prox_cyl_hc(const prox_cyl *k, prox_vec3 d)

@@ -5,24 +5,16 @@
  * revolution lies in the point's half-plane. */
 #include <math.h>
 
+#include "core/axis.h"
 #include "core/curved.h"
 #include "core/curved_normal.h"
 #include "core/ellipse2.h"
 
-/* Component of d across the unit axis w, rejected twice (see core/cone.c). */
-static prox_vec3 across(prox_vec3 d, prox_vec3 w)
-{
-    prox_vec3 p = prox_v3_mad(d, -prox_v3_dot(d, w), w);
-    return prox_v3_mad(p, -prox_v3_dot(p, w), w);
-}
-
+/* The half-plane coordinates of y: t, rho and the radial unit vector *u (core/axis.h). */
 static double half_plane(const prox_ellb *k, prox_vec3 y, double *rho, prox_vec3 *u)
 {
-    double t = prox_v3_dot(y, k->w);
-    prox_vec3 p = across(y, k->w);
-    *rho = prox_v3_norm(p);
-    *u = *rho > 0.0 ? prox_v3_normalize(p) : prox_v3_any_perp(k->w);
-    return t;
+    *u = prox_axis_radial(y, k->w, rho);
+    return prox_v3_dot(y, k->w);
 }
 
 prox_vec3 prox_ellb_make(const prox_ell *e, prox_ellb *k)
@@ -37,14 +29,14 @@ prox_vec3 prox_ellb_make(const prox_ell *e, prox_ellb *k)
 /* hc(d) = sqrt(d^T M d) = |(a d.w, b |P d|)| with M = a^2 w w^T + b^2 (I - w w^T). */
 double prox_ellb_hc(const prox_ellb *k, prox_vec3 d)
 {
-    return prox_hypot2(k->a * prox_v3_dot(d, k->w), k->b * prox_v3_norm(across(d, k->w)));
+    return prox_hypot2(k->a * prox_v3_dot(d, k->w), k->b * prox_v3_norm(prox_axis_across(d, k->w)));
 }
 
 /* pc(d) = M d / hc(d): the point whose outward normal is d. */
 prox_vec3 prox_ellb_pc(const prox_ellb *k, prox_vec3 d)
 {
     double pw = k->a * prox_v3_dot(d, k->w);
-    prox_vec3 pd = across(d, k->w);
+    prox_vec3 pd = prox_axis_across(d, k->w);
     double h = prox_hypot2(pw, k->b * prox_v3_norm(pd));
     if (!(h > 0.0)) return prox_v3(0, 0, 0);
     return prox_v3_mad(prox_v3_scale(k->w, k->a * (pw / h)), k->b * (k->b / h), pd);

@@ -34,6 +34,7 @@
 #include "convex.h"
 
 #include "epa.h"
+#include "core/axis.h"
 #include "core/pl_disk.h"
 #include "core/plane2.h"
 #include "core/tol.h"
@@ -796,9 +797,9 @@ static cvx_set cone_set(const prox_body *b, prox_vec3 d, double ftol)
 {
     const prox_cone *k = &b->x.cone;
     double t = prox_v3_dot(d, k->w);
-    /* rejected twice: once leaves eps of the axis in it, 2.5e-7 of a 4e-10 perp (a flat cone's
-     * lateral normal), which tilted its generator off the surface by that times its radius */
-    prox_vec3 perp = prox_v3_reject(prox_v3_reject(d, k->w), k->w);
+    /* rejected twice (core/axis.h): once leaves eps of the axis in it, 2.5e-7 of a 4e-10 perp (a flat
+     * cone's lateral normal), which tilted its generator off the surface by that times its radius */
+    prox_vec3 perp = prox_axis_across(d, k->w);
     double pn = prox_v3_norm(perp);
     if (pn <= ftol) {
         double r = t >= 0.0 ? k->r2 : k->r1;
@@ -1813,7 +1814,9 @@ static void common_point(cvx *s, const gjk_out *g, prox_distance_result *r, prox
 /* The early certificate of a disjoint pair x in A, y in B: the weak-duality bound -phi along the
  * pair's own direction n = (y - x) / |y - x| within PROX_TOL_CERT S of |y - x|. Along n itself, so
  * that x and y lie on the supporting planes at n to that slack and n is the normal: a pair that only
- * matched -phi at some other direction (GJK's) can be ~sqrt(slack x size) off the closest points. */
+ * matched -phi at some other direction (GJK's) can be ~sqrt(slack x size) off the closest points.
+ * |y - x| is an upper bound only for x in A and y in B, which the membership tests confirm (to the
+ * touching band): a support point put off its solid by rounding would make it a false one. */
 static int pair_certified(const cvx *s, prox_vec3 x, prox_vec3 y, cvx_answer *r)
 {
     prox_vec3 v = prox_v3_sub(y, x);
@@ -1823,6 +1826,8 @@ static int pair_certified(const cvx *s, prox_vec3 x, prox_vec3 y, cvx_answer *r)
     double lower = -phi_eval(s, n);
     /* |y - x| below the lower bound: x and y are not both in the solids (rounding of a support point) */
     if (!(fabs(up - lower) <= PROX_TOL_CERT * s->S)) return 0;
+    double tol = PROX_TOL_TOUCH * s->S;
+    if (!prox_body_contains(&s->a, x, tol) || !prox_body_contains(&s->b, y, tol)) return 0;
     r->lower = lower, r->upper = up, r->n = n, r->p1 = x, r->p2 = y;
     return 1;
 }
