@@ -10,6 +10,7 @@
  * B in the high one, modulo 10; bits 0-1 and 2-3 of byte 0: their fz_shape variants; raw doubles from
  * byte 2, B from double FZ_SHAPE_DOUBLES) and the properties of a pair answer (check_pair below). */
 #define _POSIX_C_SOURCE 200809L
+#include <float.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <unistd.h>
@@ -33,6 +34,15 @@
 #define PAIR_SYM_TOL 1e-9
 #define PAIR_ON_TOL 1e-9
 
+/* The rounding of a witness point's own coordinates: a pair 1e-57 across lying 5e-33 from the origin
+ * (raw doubles make such pairs) has witnesses that cannot be placed closer than an ulp of 5e-33, and
+ * the tolerances below add this to their share of S. */
+static double coord_round(prox_vec3 p, prox_vec3 q)
+{
+    double m = fmax(fmax(fabs(p.x), fabs(p.y)), fmax(fabs(p.z), fmax(fmax(fabs(q.x), fabs(q.y)), fabs(q.z))));
+    return 8.0 * DBL_EPSILON * m;
+}
+
 /* Distance from point q to shape s by the sphere queries (a sphere of radius r tiny against S). */
 static double point_gap(const prox_shape *s, prox_vec3 q, double r)
 {
@@ -50,19 +60,20 @@ static void check_pair(const prox_shape *a, const prox_shape *b)
     if (!(S > 0.0) || !(S <= 1e90)) return; /* the witness spheres need room below the range */
     prox_distance_result ab = prox_shape_distance(a, b), ba = prox_shape_distance(b, a);
     CHECK(ab.status == PROX_OK && ba.status == PROX_OK);
-    double tol = PAIR_SYM_TOL * S;
-    CHECK(fabs(ab.distance - ba.distance) <= tol);
-    CHECK(fabs(prox_v3_norm(prox_v3_sub(ab.p2, ab.p1)) - ab.distance) <= tol);
-    double r = PAIR_ON_TOL * S;
+    double tol = PAIR_SYM_TOL * S, ta = tol + coord_round(ab.p1, ab.p2);
+    CHECK(fabs(ab.distance - ba.distance) <= tol + fmax(coord_round(ab.p1, ab.p2), coord_round(ba.p1, ba.p2)));
+    CHECK(fabs(prox_v3_norm(prox_v3_sub(ab.p2, ab.p1)) - ab.distance) <= ta);
+    double r = PAIR_ON_TOL * S + coord_round(ab.p1, ab.p2);
     CHECK(point_gap(a, ab.p1, r) <= r);
     CHECK(point_gap(b, ab.p2, r) <= r);
     prox_signed_result g = prox_shape_signed_distance(a, b);
     CHECK(g.status == PROX_OK);
-    if (ab.distance > tol) CHECK(fabs(g.sd - ab.distance) <= tol);
-    CHECK(point_gap(a, g.p1, r) <= r);
-    CHECK(point_gap(b, g.p2, r) <= r);
+    double tg = tol + coord_round(g.p1, g.p2), rg = PAIR_ON_TOL * S + coord_round(g.p1, g.p2);
+    if (ab.distance > tol) CHECK(fabs(g.sd - ab.distance) <= fmax(ta, tg));
+    CHECK(point_gap(a, g.p1, rg) <= rg);
+    CHECK(point_gap(b, g.p2, rg) <= rg);
     CHECK(fabs(prox_v3_norm(g.normal) - 1.0) <= PAIR_SYM_TOL);
-    CHECK(prox_v3_norm(prox_v3_sub(prox_v3_sub(g.p2, g.p1), prox_v3_scale(g.normal, g.sd))) <= tol);
+    CHECK(prox_v3_norm(prox_v3_sub(prox_v3_sub(g.p2, g.p1), prox_v3_scale(g.normal, g.sd))) <= tg);
     /* the proved enclosure holds the answer, and a certified one is within the depth bar */
     CHECK(g.sd_lower <= g.sd && g.sd <= g.sd_upper);
     if (g.certified) CHECK(g.sd_upper - g.sd_lower <= PAIR_SYM_TOL * S);

@@ -1,6 +1,8 @@
 /* Regression tests that replay fuzzer inputs (fuzz/crashes). Each test opens with the configuration
  * it guards and why it is hard. Contract: valid shapes get PROX_OK with finite answers, never NaN;
  * shapes outside the supported range get PROX_EINVAL_RANGE. */
+#include <float.h>
+
 #include "test_util.h"
 
 #include "prox/query.h"
@@ -742,6 +744,33 @@ static void test_fuzz_near_cylinder_trc_box(void **state)
     }
 }
 
+/* fuzz/crashes/pairs-far-speck-needle-sph-*: a needle (length 4.4e-62, radius 2.1e-76) at the centre
+ * of a sphere of radius 3.5e-57, the pair 7e-57 across and 4.7e-33 from the origin. Its depth is the
+ * sphere's radius to within the needle's length; the two witnesses, 3.5e-57 apart, cannot be placed
+ * near 4.7e-33 (ulp 6e-49), so they satisfy p2 - p1 = sd normal only to the rounding of their own
+ * coordinates. Guards: OK, certified, the enclosure, a unit normal, and the witness relation to 1e-12 S
+ * plus 8 eps of the largest coordinate. */
+static void test_fuzz_far_speck_needle_sph(void **state)
+{
+    (void)state;
+    prox_shape a = prox_shape_from_rcc((prox_rcc){prox_v3(5.3542165410115511e-38, 4.6584935735268916e-33, 1.949765603255495e-313),
+                                                   prox_v3(4.4194159246042994e-62, 1.1428416299956103e-71, 1.8040490071703454e-153),
+                                                   2.0913074576809324e-76});
+    prox_shape b = prox_shape_from_sph((prox_sph){prox_v3(5.3542165410115511e-38, 4.6584935735268916e-33, 1.6598377289412965e-76),
+                                                  3.5372887656862235e-57});
+    for (int k = 0; k < 2; ++k) {
+        double S, M = 4.6584935735268916e-33;
+        prox_signed_result g = signed_checked(k ? &b : &a, k ? &a : &b, 1e-12 + 8.0 * DBL_EPSILON * M / 7.07e-57, &S);
+        assert_true(g.certified);
+        assert_true(g.sd_lower <= g.sd && g.sd <= g.sd_upper);
+        assert_true(fabs(g.sd + 3.5372887656862235e-57) <= 4.5e-62);
+        assert_near(prox_v3_norm(g.normal), 1.0, 1e-12);
+        prox_distance_result d = prox_shape_distance(k ? &b : &a, k ? &a : &b);
+        assert_int_equal(d.status, PROX_OK);
+        assert_true(d.intersect && d.distance == 0.0);
+    }
+}
+
 /* fuzz/crashes/pairs-ell-subnormal-axis-*: a sphere's centre a subnormal distance (3.7e-315) off an
  * ellipsoid's major axis, inside it. The point-ellipse secular equation's derivative carries
  * 1 / Z and overflowed: Newton stopped at its bracket's end and the nearest boundary point came out
@@ -828,6 +857,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_axis_support_point),
         cmocka_unit_test(test_fuzz_ell_subnormal_axis),
         cmocka_unit_test(test_fuzz_near_cylinder_trc_box),
+        cmocka_unit_test(test_fuzz_far_speck_needle_sph),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
