@@ -771,6 +771,27 @@ static void test_fuzz_far_speck_needle_sph(void **state)
     }
 }
 
+/* fuzz/crashes/pairs-subnormal-offset-ell-sph-*: an ELL (a = 2 along z to a subnormal tilt, b = 1)
+ * and a sphere of radius 2 whose centre is 1.3e-309 off the ELL's centre. The radial direction of that
+ * offset is well defined, but 1 / |offset| overflows: scaling by it gave inf x 0 = NaN witnesses. The
+ * depth is b + r = 3, along the offset (the equator). */
+static void test_fuzz_subnormal_offset_ell_sph(void **state)
+{
+    (void)state;
+    prox_shape a = prox_shape_from_ell((prox_ell){prox_v3(0, 0, 0), prox_v3(1.3091865231939344e-309, 0, 2), 1.0});
+    prox_shape b = prox_shape_from_sph((prox_sph){prox_v3(0, 1.3091865234529681e-309, 0), 2.0});
+    for (int k = 0; k < 2; ++k) {
+        double S;
+        prox_signed_result g = signed_checked(k ? &b : &a, k ? &a : &b, 1e-12, &S);
+        assert_true(prox_v3_isfinite(g.p1) && prox_v3_isfinite(g.p2) && prox_v3_isfinite(g.normal));
+        assert_near(g.sd, -3.0, 1e-12 * S);
+        assert_near(fabs(g.normal.y), 1.0, 1e-12);
+        prox_vec3 pa = k ? g.p2 : g.p1, pb = k ? g.p1 : g.p2; /* on the ELL's equator, on the sphere */
+        assert_near(fabs(pa.y), 1.0, 1e-12 * S);
+        assert_near(fabs(pb.y), 2.0, 1e-12 * S);
+    }
+}
+
 /* fuzz/crashes/pairs-ell-subnormal-axis-*: a sphere's centre a subnormal distance (3.7e-315) off an
  * ellipsoid's major axis, inside it. The point-ellipse secular equation's derivative carries
  * 1 / Z and overflowed: Newton stopped at its bracket's end and the nearest boundary point came out
@@ -858,6 +879,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_ell_subnormal_axis),
         cmocka_unit_test(test_fuzz_near_cylinder_trc_box),
         cmocka_unit_test(test_fuzz_far_speck_needle_sph),
+        cmocka_unit_test(test_fuzz_subnormal_offset_ell_sph),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

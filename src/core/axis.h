@@ -30,7 +30,7 @@ static inline prox_vec3 prox_axis_radial(prox_vec3 d, prox_vec3 w, double *len)
         return prox_v3_any_perp(w);
     }
     *len = n;
-    return prox_v3_scale(p, 1.0 / n);
+    return prox_v3_normalize(p); /* not p / n: 1 / n overflows for a subnormal n */
 }
 
 #endif
