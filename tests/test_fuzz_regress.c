@@ -792,6 +792,36 @@ static void test_fuzz_subnormal_offset_ell_sph(void **state)
     }
 }
 
+/* fuzz/crashes/pairs-collapsed-plate-ell-*: a box plate 5e-33 thick with corners 1e50 apart (the
+ * thickness is below the rounding of its corners, so its side faces collapse to segments) whose plane
+ * holds the origin, on the line of one long edge, 1.3e50 beyond the edge's end; an ELL of size 4 and a
+ * speck sphere at the origin. The foot of the origin on a collapsed side face passed that face's edge
+ * tests: 2.1e34 was certified with a witness 1.3e50 off the box. The distance is the corner's,
+ * sqrt 3 x 7.7e49 (the ELL's extent, 1.8, is far below 1e-12 S). */
+static void test_fuzz_collapsed_plate_ell(void **state)
+{
+    (void)state;
+    const double v = 7.6846329228755865e+49;
+    prox_box x = {prox_v3(v, v, v), {prox_v3(v, v, v), prox_v3(5.1230886152503917e+49, -2.5615443076251953e+49, -2.5615443076251953e+49),
+                                     prox_v3(0, 3.4350370219119955e-33, -3.4350370219119955e-33)}};
+    prox_shape bx = prox_shape_from_box(x);
+    prox_shape others[2] = {prox_shape_from_ell((prox_ell){prox_v3(0, 3.4917537446497729e-251, 0), prox_v3(2, -6.9835074892995458e-251, 0),
+                                                           1.7320508075688772}),
+                            prox_shape_from_sph((prox_sph){prox_v3(0, 0, 0), 1e-3})};
+    for (int i = 0; i < 2; ++i)
+        for (int k = 0; k < 2; ++k) {
+            const prox_shape *p = k ? &others[i] : &bx, *q = k ? &bx : &others[i];
+            double S;
+            prox_signed_result g = signed_checked(p, q, 1e-12, &S);
+            prox_distance_result d = prox_shape_distance(p, q);
+            assert_int_equal(d.status, PROX_OK);
+            assert_near(d.distance, sqrt(3.0) * v, 1e-12 * S);
+            assert_near(g.sd, sqrt(3.0) * v, 1e-12 * S);
+            prox_vec3 corner = k ? d.p2 : d.p1; /* the witness on the box is its corner */
+            assert_true(prox_v3_dist(corner, prox_v3(v, v, v)) <= 1e-12 * S);
+        }
+}
+
 /* fuzz/crashes/pairs-ell-subnormal-axis-*: a sphere's centre a subnormal distance (3.7e-315) off an
  * ellipsoid's major axis, inside it. The point-ellipse secular equation's derivative carries
  * 1 / Z and overflowed: Newton stopped at its bracket's end and the nearest boundary point came out
@@ -880,6 +910,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_near_cylinder_trc_box),
         cmocka_unit_test(test_fuzz_far_speck_needle_sph),
         cmocka_unit_test(test_fuzz_subnormal_offset_ell_sph),
+        cmocka_unit_test(test_fuzz_collapsed_plate_ell),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -12,6 +12,7 @@
  *       v1 and v3, 4 top (v + v3), 5 base;
  *   ARB k: the k-th face entry of the card. */
 #include "core/polytope.h"
+#include "core/tol.h"
 
 #include <math.h>
 #include <string.h>
@@ -459,19 +460,13 @@ static prox_vec3 seg_closest(prox_vec3 a, prox_vec3 b, prox_vec3 y)
     return prox_v3_mad(a, t, ab);
 }
 
-/* Closest point of face f (a convex polygon) to y: the foot on its plane when that lies inside
- * every edge's inner half-plane, else the nearest point of its edges. */
+/* Closest point of face f (a convex polygon) to y: the foot on its plane when that lies in the face
+ * (prox_polytope_face_foot), else the nearest point of its edges. */
 static prox_vec3 face_closest(const prox_polytope *p, int f, prox_vec3 y)
 {
-    prox_vec3 n = p->n[f];
-    prox_vec3 foot = prox_v3_mad(y, p->d[f] - prox_v3_dot(n, y), n);
-    int m = p->fnv[f], inside = 1;
-    for (int i = 0; i < m && inside; ++i) {
-        prox_vec3 a = p->v[p->fv[f][i]], b = p->v[p->fv[f][i + 1 < m ? i + 1 : 0]];
-        prox_vec3 out = prox_v3_cross(prox_v3_sub(b, a), n); /* outward in the face plane */
-        if (prox_v3_dot(out, prox_v3_sub(foot, a)) > 0.0) inside = 0;
-    }
-    if (inside) return foot;
+    prox_vec3 foot;
+    if (prox_polytope_face_foot(p, f, y, &foot)) return foot;
+    int m = p->fnv[f];
     prox_vec3 best = p->v[p->fv[f][0]];
     double bd = INFINITY;
     for (int i = 0; i < m; ++i) {
@@ -502,6 +497,10 @@ prox_vec3 prox_polytope_closest(const prox_polytope *p, prox_vec3 y)
     return boundary_closest(p, y);
 }
 
+/* The foot lies inside every edge's inner half-plane (b - a) x n . (x - a) <= 0. A face collapsed
+ * to a segment (a plate 5e-33 thick whose corners 1e50 apart absorb the thickness: its side faces'
+ * short edges have length 0) bounds only across that segment, so the foot is also tested against
+ * the solid's planes (PROX_TOL_FOOT): a foot in the face lies in the solid. */
 int prox_polytope_face_foot(const prox_polytope *p, int f, prox_vec3 y, prox_vec3 *x)
 {
     prox_vec3 n = p->n[f];
@@ -511,7 +510,7 @@ int prox_polytope_face_foot(const prox_polytope *p, int f, prox_vec3 y, prox_vec
         prox_vec3 a = p->v[p->fv[f][i]], b = p->v[p->fv[f][i + 1 < m ? i + 1 : 0]];
         if (prox_v3_dot(prox_v3_cross(prox_v3_sub(b, a), n), prox_v3_sub(*x, a)) > 0.0) return 0;
     }
-    return 1;
+    return prox_polytope_contains(p, *x, PROX_TOL_FOOT * p->size);
 }
 
 int prox_polytope_closest_feature(const prox_polytope *p, prox_vec3 y, prox_vec3 *q, int *i, int *j, double *t)

@@ -96,12 +96,15 @@ static double pb_face(const prox_polytope *p, const prox_body *b, int f, prox_ve
     return best;
 }
 
-/* Is (x in P, y in B, d = |y - x| > 0) its own certificate? *gap receives gap(n). */
+/* Is (x in P, y in B, d = |y - x| > 0) its own certificate? *gap receives gap(n). d is an upper bound
+ * only for x in P (y is a closest point of B), which is tested too, to tin (the touching band and the
+ * rounding of P's planes where it lies far from the origin): a feature point put off P by a collapsed
+ * face must not certify. */
 static int pb_certified(const prox_polytope *p, const prox_body *b, prox_vec3 x, prox_vec3 y, double d, double S,
-                        double *gap)
+                        double tin, double *gap)
 {
     *gap = pb_gap(p, b, prox_v3_scale(prox_v3_sub(y, x), 1.0 / d));
-    return *gap >= d - PROX_TOL_CERT * S;
+    return *gap >= d - PROX_TOL_CERT * S && prox_polytope_contains(p, x, tin);
 }
 
 /* The result of a certified pair, moved back by o. */
@@ -125,6 +128,7 @@ int prox_poly_body_fast(const prox_polytope *p, prox_vec3 cp, const prox_body *b
     prox_body b = *body;
     b.c = prox_v3_sub(body->c, cp); /* relative to the polytope's reference point */
     double tol8 = 2.0 * PROX_QUERY_REL_TOL * S, touch = PROX_TOL_TOUCH * S, gap;
+    double tin = touch + 16.0 * DBL_EPSILON * prox_v3_norm(cp); /* x in P: the band, P's planes' rounding */
     /* cheap common points first: each body's reference point (inside it) in the other */
     if (prox_body_contains(&b, prox_v3(0, 0, 0), 0.0)) return pb_meet(prox_v3(0, 0, 0), cp, r);
     if (prox_polytope_contains(p, b.c, 0.0)) return pb_meet(b.c, cp, r);
@@ -143,7 +147,7 @@ int prox_poly_body_fast(const prox_polytope *p, prox_vec3 cp, const prox_body *b
         }
         double d = prox_v3_dist(x, q);
         if (!(d > 0.0)) return PROX_PB_OPEN;
-        if (pb_certified(p, &b, x, q, d, S, &gap)) return gap > tol8 ? pb_disjoint(x, q, d, gap, cp, r) : PROX_PB_OPEN;
+        if (pb_certified(p, &b, x, q, d, S, tin, &gap)) return gap > tol8 ? pb_disjoint(x, q, d, gap, cp, r) : PROX_PB_OPEN;
         if (it >= PB_NEG_ROUNDS && gap < 0.0) return PROX_PB_OPEN;
         /* the feature pair the projection landed on, whose pair is the next round's start when nearer */
         prox_vec3 u, v;
@@ -152,7 +156,7 @@ int prox_poly_body_fast(const prox_polytope *p, prox_vec3 cp, const prox_body *b
         if (e < d) {
             if (!(e > 0.0)) /* the feature pair met: its point in both solids is a common point */
                 return prox_polytope_contains(p, u, touch) && prox_body_contains(&b, u, touch) ? pb_meet(u, cp, r) : PROX_PB_OPEN;
-            if (pb_certified(p, &b, u, v, e, S, &gap)) return gap > tol8 ? pb_disjoint(u, v, e, gap, cp, r) : PROX_PB_OPEN;
+            if (pb_certified(p, &b, u, v, e, S, tin, &gap)) return gap > tol8 ? pb_disjoint(u, v, e, gap, cp, r) : PROX_PB_OPEN;
             q = v, d = e;
         }
         if (!(d < last)) return PROX_PB_OPEN;
