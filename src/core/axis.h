@@ -18,19 +18,21 @@ static inline prox_vec3 prox_axis_across(prox_vec3 d, prox_vec3 w)
 }
 
 /* The unit radial direction of d about w, its length |d - (d.w) w| in *len. A radial part at the
- * rounding of d (|P d| <= PROX_TOL_NOISE |d|) is d on the axis: its direction is noise and, for d
+ * rounding of d (|P d| <= PROX_TOL_NOISE max |d_i|) is d on the axis: its direction is noise and, for d
  * along w = (1, 1, 1) / sqrt 3 whose residual has three equal components, lies along w itself, which
- * would put a rim point on the axis beyond the cap. Then *len = 0 and any perpendicular is returned. */
+ * would put a rim point on the axis beyond the cap. Then *len = 0 and any perpendicular is returned.
+ * One square root (this is on every closest-point query of a TRC or an ELL); below 2^-1000 the
+ * length's reciprocal would overflow, and prox_v3_normalize rescales first. */
 static inline prox_vec3 prox_axis_radial(prox_vec3 d, prox_vec3 w, double *len)
 {
     prox_vec3 p = prox_axis_across(d, w);
-    double n = prox_v3_norm(p);
-    if (!(n > PROX_TOL_NOISE * prox_v3_norm(d))) {
+    double n = prox_v3_norm(p), m = fmax(fmax(fabs(d.x), fabs(d.y)), fabs(d.z));
+    if (!(n > PROX_TOL_NOISE * m)) {
         *len = 0.0;
         return prox_v3_any_perp(w);
     }
     *len = n;
-    return prox_v3_normalize(p); /* not p / n: 1 / n overflows for a subnormal n */
+    return n >= 0x1p-1000 ? prox_v3_scale(p, 1.0 / n) : prox_v3_normalize(p);
 }
 
 #endif
