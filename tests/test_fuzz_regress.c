@@ -822,6 +822,34 @@ static void test_fuzz_collapsed_plate_ell(void **state)
         }
 }
 
+/* fuzz/crashes/pairs-tiny-wed-box-*: a wedge and a box 4e-93 across, 3.2e-94 apart. The harness's
+ * witness sphere (1e-9 S = 4e-102) was out of range; the answers were right. Guards: OK, the same
+ * distance both ways and from the signed distance, witnesses in their solids (by spheres of the
+ * least size in range, 1e-100). */
+static void test_fuzz_tiny_wed_box(void **state)
+{
+    (void)state;
+    const double v = -1.718333114002038e-93;
+    prox_shape a = prox_shape_from_wed((prox_wed){prox_v3(0, 4.973427635074857e-316, 0), prox_v3(-1.2389288385165961e-93, v, v),
+                                                  prox_v3(v, v, 7.2911220195563975e-304),
+                                                  prox_v3(-2.0647248888583845e-93, 2.0647248888583845e-93, -5.7604543109488089e-94)});
+    prox_shape b = prox_shape_from_box((prox_box){prox_v3(v, v, v), {prox_v3(v, 8.4979291084694406e-322, -1.7183331140020016e-93),
+                                                                      prox_v3(-2.232216285304993e-103, v, 2.232214156325073e-103),
+                                                                      prox_v3(-1.215044997248225e-93, 3.1568290394122729e-103, 1.2150449972482508e-93)}});
+    double S;
+    prox_signed_result g = signed_checked(&a, &b, 1e-12, &S);
+    prox_distance_result ab = prox_shape_distance(&a, &b), ba = prox_shape_distance(&b, &a);
+    assert_int_equal(ab.status, PROX_OK);
+    assert_int_equal(ba.status, PROX_OK);
+    assert_false(ab.intersect);
+    assert_near(ab.distance, ba.distance, 1e-12 * S);
+    assert_near(g.sd, ab.distance, 1e-12 * S);
+    prox_shape s1 = prox_shape_from_sph((prox_sph){ab.p1, PROX_MIN_SIZE}), s2 = prox_shape_from_sph((prox_sph){ab.p2, PROX_MIN_SIZE});
+    prox_distance_result d1 = prox_shape_distance(&a, &s1), d2 = prox_shape_distance(&b, &s2);
+    assert_int_equal(d1.status, PROX_OK);
+    assert_true(d1.distance <= PROX_MIN_SIZE && d2.distance <= PROX_MIN_SIZE);
+}
+
 /* fuzz/crashes/pairs-ell-subnormal-axis-*: a sphere's centre a subnormal distance (3.7e-315) off an
  * ellipsoid's major axis, inside it. The point-ellipse secular equation's derivative carries
  * 1 / Z and overflowed: Newton stopped at its bracket's end and the nearest boundary point came out
@@ -911,6 +939,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_far_speck_needle_sph),
         cmocka_unit_test(test_fuzz_subnormal_offset_ell_sph),
         cmocka_unit_test(test_fuzz_collapsed_plate_ell),
+        cmocka_unit_test(test_fuzz_tiny_wed_box),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
