@@ -850,6 +850,30 @@ static void test_fuzz_tiny_wed_box(void **state)
     assert_true(d1.distance <= PROX_MIN_SIZE && d2.distance <= PROX_MIN_SIZE);
 }
 
+/* fuzz/crashes/pairs-needle-ell-rhp-depth-witness-*: an ELL needle of aspect 1e10 (semi-axes 6.9e-33
+ * and 7.3e-43) through a flat hexagonal plate 4e-34 thick. The depth was certified, but its witnesses
+ * were 5.3e-9 S off p2 - p1 = sd normal: the needle's support point moves 1e10 times faster than the
+ * normal, and one replacement of each witness by its body's boundary point did not close the gap.
+ * Guards the overlap's bar, 1e-9 S, in both orders, with the enclosure and its certificate. */
+static void test_fuzz_needle_ell_rhp_depth_witness(void **state)
+{
+    (void)state;
+    prox_rhp h = {prox_v3(0, 8.3704497214717782e-306, 0), prox_v3(3.8518598887744717e-34, 1.3993953127464754e-76, 1.5805889573589228e-153),
+                  {prox_v3(0, 4.0874883305346056e-33, 2.002543895674692e-52),
+                   prox_v3(6.3006101702724259e-95, 2.0437441652673028e-33, 3.5398687319154129e-33),
+                   prox_v3(6.3006101702724259e-95, -2.0437441652673028e-33, 3.5398687319154129e-33)}};
+    prox_shape a = prox_shape_from_rhp(h);
+    prox_shape b = prox_shape_from_ell((prox_ell){prox_v3(3.4732827106519577e-310, 0, 2.4845094613188933e-91),
+                                                  prox_v3(4.857875059588523e-33, 4.8578750597249806e-33, 6.5302189100292183e-43),
+                                                  7.2643449230955594e-43});
+    for (int k = 0; k < 2; ++k) {
+        double S;
+        prox_signed_result g = signed_checked(k ? &b : &a, k ? &a : &b, 1e-9, &S);
+        assert_true(g.sd < 0.0 && g.certified);
+        assert_true(g.sd_lower <= g.sd && g.sd <= g.sd_upper);
+    }
+}
+
 /* fuzz/crashes/pairs-ell-subnormal-axis-*: a sphere's centre a subnormal distance (3.7e-315) off an
  * ellipsoid's major axis, inside it. The point-ellipse secular equation's derivative carries
  * 1 / Z and overflowed: Newton stopped at its bracket's end and the nearest boundary point came out
@@ -940,6 +964,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_subnormal_offset_ell_sph),
         cmocka_unit_test(test_fuzz_collapsed_plate_ell),
         cmocka_unit_test(test_fuzz_tiny_wed_box),
+        cmocka_unit_test(test_fuzz_needle_ell_rhp_depth_witness),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
