@@ -874,6 +874,32 @@ static void test_fuzz_needle_ell_rhp_depth_witness(void **state)
     }
 }
 
+/* fuzz/crashes/pairs-sliver-wed-huge-box-depth-*: a sliver wedge 4e-38 across (1e-78 S) touching a
+ * box plate 1e40 wide. The wedge's face planes, cross products of edges 40 orders of magnitude apart,
+ * passed a depth witness 1e33 (3.5e-8 S) off the wedge; a polytope's membership now also asks for its
+ * corners' box, and the polytope pair's witnesses that fail it go to the support-function engine. */
+static void test_fuzz_sliver_wed_huge_box_depth(void **state)
+{
+    (void)state;
+    prox_shape a = prox_shape_from_wed((prox_wed){prox_v3(9.2940446411008663e-186, 2.3221085354538588e-321, 1.2909765772127815e-307),
+                                                  prox_v3(7.4955226072741057e-67, 3.5379208477231184e-57, 4.4357556401023819e-38),
+                                                  prox_v3(1.659827181475229e-76, 9.5011881238158701e-43, 6.0089081935101064e-67),
+                                                  prox_v3(-1.312920717511986e-47, 2.2936305077318428e-81, 2.2185683157791105e-76)});
+    prox_shape b = prox_shape_from_box((prox_box){prox_v3(1.1071093886279223e-47, 7.866409219332494e-67, 7.1246076521812339e-67),
+                                                  {prox_v3(2.088947142791167e-76, 1.658479077322379e-76, 3.2526677619213861e-86),
+                                                   prox_v3(-3.1848577427938145e+39, 4.0115064263406278e+39, 1.6525713065970373e+40),
+                                                   prox_v3(1.6999958377303583e+40, -2.1412398243773851e+40, 8.4739715414615028e+39)}});
+    for (int k = 0; k < 2; ++k) {
+        const prox_shape *x = k ? &b : &a, *y = k ? &a : &b;
+        double S;
+        prox_signed_result g = signed_checked(x, y, 1e-9, &S);
+        assert_true(fabs(g.sd) <= 1e-9 * S);
+        prox_shape s1 = prox_shape_from_sph((prox_sph){g.p1, 1e-9 * S}), s2 = prox_shape_from_sph((prox_sph){g.p2, 1e-9 * S});
+        assert_true(prox_shape_distance(x, &s1).distance == 0.0);
+        assert_true(prox_shape_distance(y, &s2).distance == 0.0);
+    }
+}
+
 /* fuzz/crashes/pairs-ell-subnormal-axis-*: a sphere's centre a subnormal distance (3.7e-315) off an
  * ellipsoid's major axis, inside it. The point-ellipse secular equation's derivative carries
  * 1 / Z and overflowed: Newton stopped at its bracket's end and the nearest boundary point came out
@@ -965,6 +991,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_collapsed_plate_ell),
         cmocka_unit_test(test_fuzz_tiny_wed_box),
         cmocka_unit_test(test_fuzz_needle_ell_rhp_depth_witness),
+        cmocka_unit_test(test_fuzz_sliver_wed_huge_box_depth),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

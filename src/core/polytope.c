@@ -447,7 +447,18 @@ int prox_polytope_contains(const prox_polytope *p, prox_vec3 y, double tol)
 {
     for (int f = 0; f < p->nf; ++f)
         if (prox_v3_dot(p->n[f], y) > p->d[f] + tol) return 0;
-    return 1;
+    /* The corners' box too: a sliver's planes, cross products of edges 1e-40 of their length apart,
+     * can pass a point 1e71 times the sliver's size away from it. */
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int i = 0; i < p->nv; ++i) {
+        const double v[3] = {p->v[i].x, p->v[i].y, p->v[i].z};
+        for (int k = 0; k < 3; ++k) {
+            if (v[k] < lo[k]) lo[k] = v[k];
+            if (v[k] > hi[k]) hi[k] = v[k];
+        }
+    }
+    return y.x >= lo[0] - tol && y.y >= lo[1] - tol && y.z >= lo[2] - tol && y.x <= hi[0] + tol &&
+           y.y <= hi[1] + tol && y.z <= hi[2] + tol;
 }
 
 /* Closest point of the segment [a, b] to y. */

@@ -48,7 +48,8 @@ prox_status prox_polytope_checked_full(const prox_shape *s, prox_polytope *p, pr
 double prox_polytope_hc(const prox_polytope *p, prox_vec3 d);
 prox_vec3 prox_polytope_pc(const prox_polytope *p, prox_vec3 d);
 
-/* 1 when y (relative to c) lies in the solid enlarged by tol >= 0 (every face plane moved out by tol). */
+/* 1 when y (relative to c) lies in the solid enlarged by tol >= 0: every face plane moved out by tol,
+ * and within tol of the corners' bounding box. */
 int prox_polytope_contains(const prox_polytope *p, prox_vec3 y, double tol);
 
 /* Closest point of the solid to y (y itself inside), relative to c. */
