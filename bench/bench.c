@@ -196,6 +196,19 @@ static void print_row(FILE *csv, const bench_case *c, const case_stats *st, int 
 void bench_group_crosscheck(const bench_opts *o); /* bench/bench_crosscheck.c */
 void bench_group_mix(const bench_opts *o);        /* bench/bench_mix.c */
 
+/* Leaves main with status. FCL and Coal each bring their own Octomap library into the process, and
+ * their static destructors free the same objects twice at exit ("double free or corruption"): with
+ * Coal linked, the output is flushed and the process leaves without running them. */
+static int finish(int status)
+{
+#ifdef PROX_BENCH_COAL
+    fflush(stdout);
+    fflush(stderr);
+    _exit(status);
+#endif
+    return status;
+}
+
 int main(int argc, char **argv)
 {
     bench_opts o = {0, 0, 7, NULL, PROX_BENCH_VALIDATION_DIR, 0};
@@ -205,6 +218,10 @@ int main(int argc, char **argv)
         if (!strcmp(argv[k], "--quick")) o.quick = 1;
         else if (!strcmp(argv[k], "--long")) o.long_stress = 1;
         else if (!strcmp(argv[k], "--list")) list = 1;
+        else if (!strcmp(argv[k], "--help") || !strcmp(argv[k], "-h")) {
+            usage();
+            return finish(0);
+        }
         else if (!strcmp(argv[k], "--agarwal-cases")) study = 1;
         else if (!strcmp(argv[k], "--repeats") && k + 1 < argc) o.repeats = atoi(argv[++k]);
         else if (!strcmp(argv[k], "--filter") && k + 1 < argc) o.filter = argv[++k];
@@ -213,14 +230,14 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[k], "--validation") && k + 1 < argc) o.validation_dir = argv[++k];
         else {
             usage();
-            return 2;
+            return finish(2);
         }
     }
     if (o.repeats < 5) o.repeats = 5; /* the median of at least 5 repeats */
     gsl_set_error_handler_off();      /* the library must never rely on GSL's aborting handler */
     if (study) {
         bench_agarwal_case_study(&o); /* counts only, no timing */
-        return 0;
+        return finish(0);
     }
 
     /* Build every selected input before any timing. */
@@ -236,7 +253,7 @@ int main(int argc, char **argv)
     FILE *csv = NULL;
     if (csv_path && !(csv = fopen(csv_path, "w"))) {
         fprintf(stderr, "prox_bench: cannot write %s\n", csv_path);
-        return 2;
+        return finish(2);
     }
     double overhead = clock_overhead();
     printf("# prox_bench: %d repeats, clock overhead %.1f ns subtracted from per-query times%s\n", o.repeats,
@@ -258,13 +275,5 @@ int main(int argc, char **argv)
 #endif
     if (csv) fclose(csv);
     free(g_cases);
-#ifdef PROX_BENCH_COAL
-    /* FCL and Coal each bring their own Octomap library into the process, and their static
-     * destructors free the same objects twice at exit ("double free or corruption"): the output is
-     * complete and flushed here, so leave without running them. */
-    fflush(stdout);
-    fflush(stderr);
-    _exit(0);
-#endif
-    return 0;
+    return finish(0);
 }
