@@ -67,15 +67,15 @@ static inline double prox_cyl_support(const prox_cyl *k, prox_vec3 d)
 
 /* Centred support point: x - c for a point x of the cylinder with d.x = h(d). d.w = 0 gives the
  * middle of the side segment, d along the axis the centre of the disk (the middle of the support set).
- * A radial part at the rounding of d (|perp| <= PROX_TOL_NOISE |d|) is d along the axis: its direction
- * is noise, and may even lie along w, which would put the point off the cylinder. */
+ * A radial part at the rounding of d is d along the axis (prox_axis_radial): its direction is noise,
+ * and may even lie along w, which would put the point off the cylinder. */
 static inline prox_vec3 prox_cyl_support_point_c(const prox_cyl *k, prox_vec3 d)
 {
     double dw = prox_v3_dot(d, k->w);
     prox_vec3 p = prox_v3_scale(k->w, dw > 0.0 ? k->hh : (dw < 0.0 ? -k->hh : 0.0));
-    prox_vec3 perp = prox_cyl_perp(k, d);
-    double n = prox_v3_norm(perp);
-    return n > PROX_TOL_NOISE * prox_v3_norm(d) ? prox_v3_mad(p, k->r / n, perp) : p;
+    double n;
+    prox_vec3 u = prox_axis_radial(d, k->w, &n);
+    return n > 0.0 ? prox_v3_mad(p, k->r, u) : p;
 }
 
 /* Support point in the cylinder's coordinates. */
