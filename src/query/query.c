@@ -244,9 +244,10 @@ static prox_status polys(const prox_shape *a, const prox_shape *b, prox_polytope
 static prox_distance_result convex_distance(const prox_shape *a, const prox_shape *b);
 static prox_signed_result convex_signed(const prox_shape *a, const prox_shape *b);
 
-/* The polytope solver's answer, or, when it could not certify a disjoint pair (a speck of a box
- * 1e-24 of the pair's scale beside an ARB: its features collapse in the pair's frame, and one order
- * of the pair answered 1e-47 for 1e-42), the support-function method's certified one. */
+/* The polytope solver's answer, or, when it could not certify it (a speck of a box 1e-24 of the
+ * pair's scale beside an ARB: its features collapse in the pair's frame, and one order of the pair
+ * answered 1e-47 for 1e-42; a common point outside a speck's own planes), the support-function
+ * method's certified one. */
 static prox_distance_result poly_distance(const prox_shape *a, const prox_shape *b)
 {
     prox_polytope pa, pb;
@@ -254,14 +255,6 @@ static prox_distance_result poly_distance(const prox_shape *a, const prox_shape 
     prox_distance_result r = {0};
     if ((r.status = polys(a, b, &pa, &ca, &pb, &cb)) != PROX_OK) return r;
     r = prox_poly_distance(&pa, ca, &pb, cb);
-    if (r.intersect) {
-        /* the common point checked again in each polytope's own frame: in the pair's frame a speck
-         * 1e-25 of the pair's scale loses its planes' offsets to rounding (a box 1e-67 across,
-         * 1.4e-5 S from a sliver wedge, was taken as meeting it) */
-        double tol = PROX_TOL_TOUCH * fmax(prox_v3_dist(ca, cb), fmax(pa.size, pb.size));
-        if (!prox_polytope_contains(&pa, prox_v3_sub(r.p1, ca), tol) || !prox_polytope_contains(&pb, prox_v3_sub(r.p1, cb), tol))
-            return convex_distance(a, b);
-    }
     return r.certified ? r : convex_distance(a, b);
 }
 
