@@ -43,12 +43,12 @@ static double coord_round(prox_vec3 p, prox_vec3 q)
     return 8.0 * DBL_EPSILON * m;
 }
 
-/* Distance from point q to shape s by the sphere queries (a sphere of radius r tiny against S; not
- * below PROX_MIN_SIZE, where the sphere would be out of range: a pair 4e-93 across gets a witness
- * sphere of 1e-100, 2.5e-8 of its scale). */
+/* Distance from point q to shape s by the sphere queries (a sphere of radius r tiny against S; the
+ * callers keep r at least PROX_MIN_SIZE, below which the sphere would be out of range: a pair 4e-93
+ * across gets a witness sphere of 1e-100, 2.5e-8 of its scale). */
 static double point_gap(const prox_shape *s, prox_vec3 q, double r)
 {
-    prox_shape ball = prox_shape_from_sph((prox_sph){q, fmax(r, PROX_MIN_SIZE)});
+    prox_shape ball = prox_shape_from_sph((prox_sph){q, r});
     prox_distance_result d = prox_shape_distance(s, &ball);
     return d.status == PROX_OK ? d.distance : NAN;
 }
@@ -65,8 +65,7 @@ static void check_pair(const prox_shape *a, const prox_shape *b)
     double tol = PAIR_SYM_TOL * S, ta = tol + coord_round(ab.p1, ab.p2);
     CHECK(fabs(ab.distance - ba.distance) <= tol + fmax(coord_round(ab.p1, ab.p2), coord_round(ba.p1, ba.p2)));
     CHECK(fabs(prox_v3_norm(prox_v3_sub(ab.p2, ab.p1)) - ab.distance) <= ta);
-    double r = PAIR_ON_TOL * S + coord_round(ab.p1, ab.p2);
-    r = fmax(r, PROX_MIN_SIZE);
+    double r = fmax(PAIR_ON_TOL * S + coord_round(ab.p1, ab.p2), PROX_MIN_SIZE);
     CHECK(point_gap(a, ab.p1, r) <= r);
     CHECK(point_gap(b, ab.p2, r) <= r);
     prox_signed_result g = prox_shape_signed_distance(a, b);

@@ -32,23 +32,26 @@ LIBSRC=$(ls "$ROOT"/src/*/*.c | grep -v '/src/cli/')
 CLISRC=$(ls "$ROOT"/src/cli/*.c | grep -v '/main.c$')
 LIBS="-lgsl -lgslcblas -lm"
 t0=$(date +%s)
-# One object per source (-fsanitize=fuzzer on a non-main object only instruments it), in parallel.
-rm -f "$BUILD"/obj/*.o
-# shellcheck disable=SC2086
-printf '%s\n' $LIBSRC $CLISRC | xargs -P "$JOBS" -I{} sh -c \
-    'f={}; d=$(basename "$(dirname "$f")"); exec '"$CC $FLAGS"' -c "$f" -o "'"$BUILD"'/obj/${d}_$(basename "$f" .c).o"'
-LIBOBJ=$(ls "$BUILD"/obj/*.o | grep -v '/obj/cli_')
-CLIOBJ=$(ls "$BUILD"/obj/cli_*.o)
-# The stress driver has its own main: the same objects, without libFuzzer's runtime.
-SFLAGS=$(echo "$FLAGS" | sed 's/-fsanitize=fuzzer,/-fsanitize=fuzzer-no-link,/')
-for name in queries deck pairs; do
-    extra=""
-    [ "$name" = pairs ] && extra="$CLIOBJ"
+# PROX_FUZZ_REUSE=1 keeps binaries already built in $BUILD (the same sources, built by an earlier run).
+if [ "${PROX_FUZZ_REUSE:-}" != 1 ] || [ ! -x "$BUILD/stress_pairs" ] || [ ! -x "$BUILD/fuzz_pairs" ]; then
+    # One object per source (-fsanitize=fuzzer on a non-main object only instruments it), in parallel.
+    rm -f "$BUILD"/obj/*.o
     # shellcheck disable=SC2086
-    $CC $FLAGS -o "$BUILD/fuzz_$name" "$ROOT/fuzz/fuzz_$name.c" $extra $LIBOBJ $LIBS
-    # shellcheck disable=SC2086
-    $CC $SFLAGS -o "$BUILD/stress_$name" "$ROOT/fuzz/stress.c" "$ROOT/fuzz/fuzz_$name.c" $extra $LIBOBJ $LIBS
-done
+    printf '%s\n' $LIBSRC $CLISRC | xargs -P "$JOBS" -I{} sh -c \
+        'f={}; d=$(basename "$(dirname "$f")"); exec '"$CC $FLAGS"' -c "$f" -o "'"$BUILD"'/obj/${d}_$(basename "$f" .c).o"'
+    LIBOBJ=$(ls "$BUILD"/obj/*.o | grep -v '/obj/cli_')
+    CLIOBJ=$(ls "$BUILD"/obj/cli_*.o)
+    # The stress driver has its own main: the same objects, without libFuzzer's runtime.
+    SFLAGS=$(echo "$FLAGS" | sed 's/-fsanitize=fuzzer,/-fsanitize=fuzzer-no-link,/')
+    for name in queries deck pairs; do
+        extra=""
+        [ "$name" = pairs ] && extra="$CLIOBJ"
+        # shellcheck disable=SC2086
+        $CC $FLAGS -o "$BUILD/fuzz_$name" "$ROOT/fuzz/fuzz_$name.c" $extra $LIBOBJ $LIBS
+        # shellcheck disable=SC2086
+        $CC $SFLAGS -o "$BUILD/stress_$name" "$ROOT/fuzz/stress.c" "$ROOT/fuzz/fuzz_$name.c" $extra $LIBOBJ $LIBS
+    done
+fi
 t1=$(date +%s)
 echo "build: $((t1 - t0)) s"
 status=0
