@@ -500,6 +500,43 @@ static void parsed_fill_trcl(void **state)
 }
 
 /* Bad input: a malformed region and a model with errors give a status. */
+/* A model bounded only by polytope macrobodies with tilted sides (an RHP's, a WED's): expanded into
+ * facet planes, each cell's side boxes leave an axis open, and the real world could not be boxed
+ * (no check at all). The planes' vertices bound the cells; the overlap of cells 1 and 2 (4 < z < 5)
+ * is found. */
+static void polytope_world(void **state)
+{
+    (void)state;
+    const char *bodies[2] = {"20 RHP 0 0 0 0 0 10 1 0 0", "20 WED 0 0 0 1 0 0 0 1 0 0 0 10"};
+    for (int v = 0; v < 2; ++v) {
+        char text[512];
+        snprintf(text, sizeof text,
+                 "two cells overlapping inside a polytope\n"
+                 "1 0 -20 -30 imp:n=1\n"
+                 "2 0 -20 29 imp:n=1\n"
+                 "99 0 20 imp:n=0\n"
+                 "\n"
+                 "%s\n"
+                 "29 PZ 4\n"
+                 "30 PZ 5\n"
+                 "\n",
+                 bodies[v]);
+        prox_cell_model m = {0};
+        assert_int_equal(prox_cells_parse(text, &m), PROX_OK);
+        assert_int_equal(m.nerrors, 0);
+        prox_cells_check_opts o = {.resolution = 0.05};
+        prox_cells_report r;
+        assert_int_equal(prox_cells_check(&m, &o, &r), PROX_OK);
+        assert_int_equal(r.nundecided, 0);
+        assert_int_equal(r.noverlaps, 1);
+        assert_true(r.overlaps[0].cells[0] == 1 && r.overlaps[0].cells[1] == 2);
+        assert_true(r.overlaps[0].point.z > 4 && r.overlaps[0].point.z < 5);
+        assert_int_equal(r.ngaps, 0);
+        prox_cells_report_free(&r);
+        prox_cells_free(&m);
+    }
+}
+
 static void bad_input(void **state)
 {
     (void)state;
@@ -523,7 +560,7 @@ int main(void)
         cmocka_unit_test(slivers),              cmocka_unit_test(tangent_no_false_alarm),
         cmocka_unit_test(unions_and_complements), cmocka_unit_test(filled_universe),
         cmocka_unit_test(removed_cell_gap),     cmocka_unit_test(parsed_fill_trcl),
-        cmocka_unit_test(bad_input),
+        cmocka_unit_test(polytope_world),       cmocka_unit_test(bad_input),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -301,7 +301,13 @@ static prox_ccbox bounded_hull(const prox_ccprep *P, size_t u0, size_t nu, int s
             if (prox_ccbox_bounded(&cb) && !prox_ccbox_is_empty(&cb)) h = prox_ccbox_or(&h, &cb);
             continue;
         }
-        if (prox_ccbox_bounded(&P->cbox[i]) && !prox_ccbox_is_empty(&P->cbox[i])) h = prox_ccbox_or(&h, &P->cbox[i]);
+        prox_ccbox b = P->cbox[i];
+        /* a cell cut by tilted planes (an RHP's, a WED's sides) is bounded by their vertices */
+        if (!prox_ccbox_bounded(&b) && !prox_ccbox_is_empty(&b) && c->nexpr) {
+            prox_ccbox t = cells_region_box(P->m, c->expr, c->nexpr);
+            b = prox_ccbox_and(&b, &t);
+        }
+        if (prox_ccbox_bounded(&b) && !prox_ccbox_is_empty(&b)) h = prox_ccbox_or(&h, &b);
     }
     return h;
 }
