@@ -503,12 +503,14 @@ static void parsed_fill_trcl(void **state)
 /* A model bounded only by polytope macrobodies with tilted sides (an RHP's, a WED's): expanded into
  * facet planes, each cell's side boxes leave an axis open, and the real world could not be boxed
  * (no check at all). The planes' vertices bound the cells; the overlap of cells 1 and 2 (4 < z < 5)
- * is found. */
+ * is found. Likewise inside an ARB whose faces name their corners out of order round the face. */
 static void polytope_world(void **state)
 {
     (void)state;
-    const char *bodies[2] = {"20 RHP 0 0 0 0 0 10 1 0 0", "20 WED 0 0 0 1 0 0 0 1 0 0 0 10"};
-    for (int v = 0; v < 2; ++v) {
+    const char *bodies[3] = {"20 RHP 0 0 0 0 0 10 1 0 0", "20 WED 0 0 0 1 0 0 0 1 0 0 0 10",
+                             /* an ARB whose side faces name their corners across the face */
+                             "20 ARB 0 0 0 1 0 0 1 1 0 0 1 0 0 0 10 1 0 10 1 1 10 0 1 10 1256 2367 3478 4185 1234 5678"};
+    for (int v = 0; v < 3; ++v) {
         char text[512];
         snprintf(text, sizeof text,
                  "two cells overlapping inside a polytope\n"

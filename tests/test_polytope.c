@@ -241,8 +241,26 @@ static void test_arb_validate(void **state)
     assert_int_equal(prox_arb_validate(&a), PROX_EINVAL_ARB_FACE);
     a = cube, a.face[1] = 123; /* not four digits */
     assert_int_equal(prox_arb_validate(&a), PROX_EINVAL_ARB_FACE);
-    a = cube, a.face[0] = 1324; /* corners not in order round the face */
-    assert_int_equal(prox_arb_validate(&a), PROX_EINVAL_ARB_FACE);
+    for (int f = 0; f < 6; ++f) { /* corners named in any order round a face: MCNP takes its plane */
+        static const int swap[3][2] = {{1, 2}, {2, 3}, {0, 2}};
+        for (int k = 0; k < 3; ++k) {
+            a = cube;
+            int d[4] = {a.face[f] / 1000, a.face[f] / 100 % 10, a.face[f] / 10 % 10, a.face[f] % 10};
+            int t = d[swap[k][0]];
+            d[swap[k][0]] = d[swap[k][1]], d[swap[k][1]] = t;
+            a.face[f] = 1000 * d[0] + 100 * d[1] + 10 * d[2] + d[3];
+            assert_int_equal(prox_arb_validate(&a), PROX_OK);
+            prox_polytope p, q;
+            prox_shape sa = prox_shape_from_arb(a), sc = prox_shape_from_arb(cube);
+            prox_polytope_make(&sa, &p), prox_polytope_make(&sc, &q);
+            assert_int_equal(p.nf, q.nf);
+            assert_int_equal(p.ne, q.ne);
+            for (int g = 0; g < p.nf; ++g) {
+                assert_true(prox_v3_dist(p.n[g], q.n[g]) < 1e-15);
+                assert_true(fabs(p.d[g] - q.d[g]) < 1e-15);
+            }
+        }
+    }
     a = cube, a.corner[6].z = 1.01; /* face 5678 (and two sides) not planar */
     assert_int_equal(prox_arb_validate(&a), PROX_EINVAL_ARB_PLANAR);
     a = cube, a.face[5] = 0; /* open surface */

@@ -77,7 +77,7 @@ typedef struct prox_wed {
 } prox_wed;
 
 /// Arbitrary polyhedron (ARB): eight corners (unused ones are zero) and six faces, each a number of
-/// four digits naming its corners 1-8 in order around the face (three corners and a 0 for a
+/// four digits naming its corners 1-8, in any order (as MCNP reads them; three corners and a 0 for a
 /// triangle; 0 for an unused face). The body must be convex with planar faces.
 typedef struct prox_arb {
     prox_vec3 corner[8];

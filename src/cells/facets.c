@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "cells/cells_internal.h"
+#include "core/polytope.h"
 
 /* Plane through p with outward normal n (facet k). */
 static void facet_plane(prox_surf *out, int k, prox_vec3 p, prox_vec3 n)
@@ -119,12 +120,7 @@ static int arb_facets(const prox_arb *a, prox_surf *out)
         if (used[i]) c = prox_v3_add(c, a->corner[i]), ++nu;
     if (nu) c = prox_v3_scale(c, 1.0 / nu);
     for (int f = 0; f < 6; ++f) {
-        int idx[4], n = 0;
-        char digits[8];
-        int len = 0;
-        for (int d = a->face[f]; d && len < 4; d /= 10) digits[len++] = (char)(d % 10);
-        for (int i = len - 1; i >= 0; --i)
-            if (digits[i]) idx[n++] = digits[i] - 1;
+        int idx[4], n = prox_arb_face_loop(a, f, idx);
         if (n < 3) { /* unused: all space */
             memset(&out[f], 0, sizeof out[f]);
             out[f].kind = PROX_SURF_QUADRIC, out[f].q[9] = -1.0, out[f].facet = f + 1;

@@ -351,6 +351,41 @@ static int loop_inwards(const prox_polytope *p, int k, prox_vec3 g, int quick)
     return prox_v3_dot(t, w) < 0.0;
 }
 
+/* Orientation of c about the directed line a -> b, seen along n. */
+static double turn(prox_vec3 a, prox_vec3 b, prox_vec3 c, prox_vec3 n)
+{
+    return prox_v3_dot(prox_v3_cross(prox_v3_sub(b, a), prox_v3_sub(c, a)), n);
+}
+
+/* 1 when the sides p -> q and r -> s of a plane loop (normal n) cross. */
+static int sides_cross(prox_vec3 p, prox_vec3 q, prox_vec3 r, prox_vec3 s, prox_vec3 n)
+{
+    return turn(p, q, r, n) * turn(p, q, s, n) < 0.0 && turn(r, s, p, n) * turn(r, s, q, n) < 0.0;
+}
+
+/* A four-corner face named out of order round the face (1256 for the loop 1, 2, 6, 5: MCNP takes a
+ * face's plane through its corners, in any order, and published decks write them so) crosses itself:
+ * two opposite sides cross, and swapping the two corners between them makes the loop. */
+int prox_arb_face_loop(const prox_arb *a, int f, int idx[4])
+{
+    int dig[4], n = 0;
+    if (a->face[f] <= 0) return 0;
+    arb_digits(a->face[f], dig);
+    for (int i = 0; i < 4; ++i)
+        if (dig[i] >= 1 && dig[i] <= 8) idx[n++] = dig[i] - 1;
+    if (n != 4) return n;
+    prox_vec3 x[4];
+    for (int i = 0; i < 4; ++i) x[i] = a->corner[idx[i]];
+    prox_vec3 nrm = prox_v3_add(prox_v3_cross(prox_v3_sub(x[1], x[0]), prox_v3_sub(x[2], x[0])),
+                                prox_v3_cross(prox_v3_sub(x[2], x[0]), prox_v3_sub(x[3], x[0])));
+    prox_vec3 m = prox_v3_cross(prox_v3_sub(x[1], x[0]), prox_v3_sub(x[3], x[0]));
+    if (prox_v3_norm2(m) > prox_v3_norm2(nrm)) nrm = m; /* a bow tie's two halves cancel in the sum */
+    int t;
+    if (sides_cross(x[1], x[2], x[3], x[0], nrm)) t = idx[2], idx[2] = idx[3], idx[3] = t;
+    else if (sides_cross(x[0], x[1], x[2], x[3], nrm)) t = idx[1], idx[1] = idx[2], idx[2] = t;
+    return 4;
+}
+
 prox_vec3 prox_polytope_arb(const prox_arb *a, prox_polytope *p, double *least, int quick)
 {
     p->nv = p->nf = p->ne = 0; /* the counts and the small per-face tables; finish() fills the rest */
@@ -380,11 +415,10 @@ prox_vec3 prox_polytope_arb(const prox_arb *a, prox_polytope *p, double *least, 
     for (int i = 0; i < p->nv; ++i) g = prox_v3_add(g, p->v[i]);
     if (p->nv) g = prox_v3_scale(g, 1.0 / p->nv);
     for (int f = 0; f < 6; ++f) {
-        int m = 0;
+        int loop[4], m = prox_arb_face_loop(a, f, loop);
         if (a->face[f] <= 0) continue;
         int k = p->nf;
-        for (int i = 0; i < 4; ++i)
-            if (dig[f][i] >= 1 && dig[f][i] <= 8) p->fv[k][m++] = (unsigned char)map[dig[f][i]];
+        for (int i = 0; i < m; ++i) p->fv[k][i] = (unsigned char)map[loop[i] + 1];
         p->fnv[k] = m;
         p->facet[k] = f + 1;
         p->nf++;

@@ -80,6 +80,10 @@ void prox_rhp_hexagon(const prox_rhp *h, prox_rhp_section *hx);
 /* The polytope of an RHP from its section (prox_rhp_hexagon); returns its reference point. */
 prox_vec3 prox_polytope_rhp(const prox_rhp *h, const prox_rhp_section *hx, prox_polytope *p);
 
+/* Corner indices (0-based) of ARB face entry f in order round the face, however the card names them;
+ * returns their count (0 for an unused entry). */
+int prox_arb_face_loop(const prox_arb *a, int f, int idx[4]);
+
 /* The polytope of an ARB (valid card entries; the solid itself is checked by the validator) and
  * *least, the smallest squared distance between two of its corners; returns its reference point.
  * Each face loop is turned outwards by its Newell normal; quick = 1 decides by the loop's first
