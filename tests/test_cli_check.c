@@ -115,6 +115,28 @@ static void test_check_bad_input(void **state)
     free(out);
 }
 
+/* A deck whose blank line right after the title empties its cell and surface blocks is an input
+ * error, never a clean verdict on nothing; a bare NONU card (fission as capture in every cell) is
+ * no error. */
+static void test_check_empty_blocks_and_bare_nonu(void **state)
+{
+    (void)state;
+    if (!have_cli()) skip();
+    char path[64], args[128], *out;
+    temp_deck("no cells\n\nc none\n\nmode n\nnps 10\n", path);
+    snprintf(args, sizeof args, "check %s", path);
+    assert_int_equal(run_cli(args, &out), 2);
+    assert_non_null(strstr(out, "no cell and no surface cards"));
+    free(out);
+    unlink(path);
+    temp_deck("bare nonu\n1 0 -1 imp:n=1\n2 0 1 imp:n=0\n\n1 SO 1\n\nnonu\n", path);
+    snprintf(args, sizeof args, "check %s --threads 1", path);
+    assert_int_equal(run_cli(args, &out), 0);
+    assert_non_null(strstr(out, "0 overlapping cell pairs, 0 gaps, 0 undecided"));
+    free(out);
+    unlink(path);
+}
+
 /* A sphere crossing an axis-aligned cylinder sideways: the repositioning vector has exact zero
  * components that the solver may produce as -0; neither the table nor the JSON prints "-0". */
 static void test_check_no_negative_zero(void **state)
@@ -146,6 +168,7 @@ int main(void)
         cmocka_unit_test(test_check_clean_deck),
         cmocka_unit_test(test_check_bad_input),
         cmocka_unit_test(test_check_no_negative_zero),
+        cmocka_unit_test(test_check_empty_blocks_and_bare_nonu),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -561,6 +561,7 @@ static void give_param(ctx *c, ccard *cc, const char *name, int star, char **val
  * repeats, nJ skips (the default). */
 static void param_card(ctx *c, const char *name, int star, char **tok, size_t nt, int line)
 {
+    if (nt == 0 && !strcmp(name, "NONU")) return; /* a bare NONU: fission as capture in every cell */
     size_t ci = 0;
     for (size_t i = 0; i < nt && ci <= c->ncc; ++i) {
         long cnt;

@@ -287,7 +287,7 @@ static void cell_errors(FILE *f, const prox_deck *d, const prox_cell_model *cm)
         fprintf(f, "%serror: line %d: %s\n", n++ ? "" : "\n", cm->errors[i].line, cm->errors[i].text);
     }
     if (cm && cm->nerrors)
-        fprintf(f, "\nnot cell-checked: %zu error%s in the cell cards\n", cm->nerrors, cm->nerrors == 1 ? "" : "s");
+        fprintf(f, "\nnot cell-checked: %zu error%s in the cards the cell model reads\n", cm->nerrors, cm->nerrors == 1 ? "" : "s");
 }
 
 /* The body-level report. */
@@ -458,6 +458,12 @@ int prox_check_run(const prox_check_args *o, FILE *out, prox_status *st)
     prox_cell_model m = {0};
     *st = prox_cells_read_file(o->path, &m);
     if (*st != PROX_OK) {
+        prox_cells_free(&m);
+        return 2;
+    }
+    if (!m.ncells && !m.nsurfs && !m.nerrors) { /* never a clean verdict on nothing */
+        fprintf(out, "error: %s: no cell and no surface cards, nothing to check (a blank line right after "
+                     "the title line ends the cell block)\n", o->path);
         prox_cells_free(&m);
         return 2;
     }
