@@ -411,8 +411,9 @@ static void cells_table(FILE *f, const check_opts *o, const prox_cell_model *m, 
         double dx = r->hi.x - r->lo.x, dy = r->hi.y - r->lo.y, dz = r->hi.z - r->lo.z;
         fprintf(f, "resolution: %.6g (%s; model box diagonal %.6g)\n", r->resolution,
                 o->resolution > 0 ? "--resolution" : "default: 1e-4 of the diagonal", sqrt(dx * dx + dy * dy + dz * dz));
-        fprintf(f, "checked: %zu boxes, %zu proved clean, %zu probed at the resolution, %.3g s\n", r->stats.boxes,
-                r->stats.clean, r->stats.leaves, r->stats.seconds);
+        fprintf(f, "checked: %zu window%s, %zu boxes, %zu proved clean, %zu probed at the resolution, %.3g s\n",
+                r->stats.windows, r->stats.windows == 1 ? "" : "s", r->stats.boxes, r->stats.clean, r->stats.leaves,
+                r->stats.seconds);
     }
     fputc('\n', f);
     if (r->noverlaps) {
