@@ -249,8 +249,9 @@ static prox_status arb_solid_ok(const prox_polytope *p)
         for (int j = i + 1; j < p->nv; ++j)
             if (!(prox_v3_dist(p->v[i], p->v[j]) > tol)) return PROX_EINVAL_ARB_FACE;
     for (int f = 0; f < p->nf; ++f) {
-        /* a loop not in order round its face has crossing sides (or a zero normal); one in order
-         * that turns both ways (or with three corners in a line) is a dent */
+        /* the builder puts a four-corner loop in order round its face (prox_arb_face_loop); one
+         * still crossing there is a face its corners do not make (or has a zero normal); one in
+         * order that turns both ways (or with three corners in a line) is a dent */
         if (!(prox_v3_norm(p->n[f]) > 0.5) || loop_crossed(p, f)) return PROX_EINVAL_ARB_FACE;
         if (!loop_ok(p, f)) return PROX_EINVAL_ARB_CONVEX;
         for (int i = 0; i < p->fnv[f]; ++i)
