@@ -196,10 +196,40 @@ static void prox_run_verdict(const void *cfg, const void *a, const void *b, benc
     out->ok = r.status == PROX_OK, out->intersect = r.intersect == 1, out->value = out->intersect;
 }
 
+/* Prepared solids (prox/solid.h): validated and built once before timing, as the peers build
+ * theirs; the same answers as the shape queries. Kept for the process's life, like the peers'. */
+static void *solid_prepare(const prox_shape *s) { return prox_solid_new(s, NULL); }
+
+static void solid_run_distance(const void *cfg, const void *a, const void *b, bench_answer *out)
+{
+    (void)cfg;
+    prox_distance_result r = prox_solid_distance(a, b);
+    out->ok = r.status == PROX_OK, out->value = r.distance, out->intersect = r.intersect;
+    out->p1 = r.p1, out->p2 = r.p2, out->has_points = !r.intersect;
+}
+
+static void solid_run_signed(const void *cfg, const void *a, const void *b, bench_answer *out)
+{
+    (void)cfg;
+    prox_signed_result r = prox_solid_signed_distance(a, b);
+    out->ok = r.status == PROX_OK, out->value = r.sd, out->intersect = r.sd <= 0;
+    out->p1 = r.p1, out->p2 = r.p2, out->has_points = 1;
+}
+
+static void solid_run_verdict(const void *cfg, const void *a, const void *b, bench_answer *out)
+{
+    (void)cfg;
+    prox_test_result r = prox_solid_test(a, b);
+    out->ok = r.status == PROX_OK, out->intersect = r.intersect == 1, out->value = out->intersect;
+}
+
 static const mix_method k_prox[] = {
     {"prox/verdict", BENCH_VERDICT, prox_prepare, prox_run_verdict, NULL, NULL},
     {"prox/distance", BENCH_DIST, prox_prepare, prox_run_distance, NULL, NULL},
     {"prox/signed", BENCH_SIGNED, prox_prepare, prox_run_signed, NULL, NULL},
+    {"prox-solid/verdict", BENCH_VERDICT, solid_prepare, solid_run_verdict, NULL, NULL},
+    {"prox-solid/distance", BENCH_DIST, solid_prepare, solid_run_distance, NULL, NULL},
+    {"prox-solid/signed", BENCH_SIGNED, solid_prepare, solid_run_signed, NULL, NULL},
 };
 
 /* ---- sets and cases ---------------------------------------------------------------------------- */

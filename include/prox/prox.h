@@ -5,6 +5,7 @@
 ///  - shapes.h: the macrobodies in MCNP's terms and their validators;
 ///  - result.h: one result type per question, shared by every pair and method;
 ///  - query.h: the generic queries for any pair of shapes (start here);
+///  - solid.h: the same queries on solids prepared once (validated, their polytopes built);
 ///  - distance.h, sat.h: the cylinder pair's three methods, the verdict and the cross-check;
 ///  - support.h: support functions and the support-function signed distance of any pair;
 ///  - pairs.h: the advanced layer, each pair kind's specialised solver;
@@ -19,6 +20,7 @@
 #include "shapes.h"
 #include "result.h"
 #include "query.h"
+#include "solid.h"
 #include "distance.h"
 #include "sat.h"
 #include "support.h"

@@ -19,11 +19,14 @@
 #include "query/query_internal.h"
 #include "prox/distance.h"
 #include "prox/sat.h"
+#include "prox/solid.h"
 #include "prox/support.h"
 #include "sat/convex.h"
 
 #include <float.h>
 #include <stddef.h>
+#include <stdlib.h>
+#include <string.h>
 
 /* ---- routes ---- */
 
@@ -230,68 +233,95 @@ static prox_test_result test_canon(const norm_shape *x, const norm_shape *y)
     return r;
 }
 
-/* ---- the polytope pairs and the support-function method ---- */
+/* ---- the polytope pairs and the support-function method ----
+ * Each route runs on built bodies, so that a prepared solid (prox_solid, built once) and a shape
+ * (built on every call) take the very same solver: the shape queries build, then call the same
+ * functions as the solid queries. */
 
-/* The polytopes of two polytope shapes (reference points in *ca, *cb), each validated as it is built
- * (one construction serves both): A's status first, as every query reports. */
-static prox_status polys(const prox_shape *a, const prox_shape *b, prox_polytope *pa, prox_vec3 *ca, prox_polytope *pb,
-                         prox_vec3 *cb)
+/* The polytope of a polytope shape as a support body (kind PROX_BODY_POLY, reference point b->c),
+ * validated as it is built. Only the fields the support-function side reads for that kind are set:
+ * the head zeroed, the polytope itself written once. */
+static prox_status poly_body_checked(const prox_shape *s, prox_body *b)
 {
-    prox_status st = prox_polytope_checked(a, pa, ca);
-    return st != PROX_OK ? st : prox_polytope_checked(b, pb, cb);
+    memset(b, 0, offsetof(prox_body, x));
+    b->kind = PROX_BODY_POLY;
+    prox_status st = prox_polytope_checked(s, &b->x.poly, &b->c);
+    b->size = b->x.poly.size;
+    return st;
 }
 
-static prox_distance_result convex_distance(const prox_shape *a, const prox_shape *b);
-static prox_signed_result convex_signed(const prox_shape *a, const prox_shape *b);
+static prox_distance_result convex_distance(const prox_shape *a, const prox_shape *b, const prox_body *ba,
+                                            const prox_body *bb);
+static prox_signed_result convex_signed(const prox_shape *a, const prox_shape *b, const prox_body *ba,
+                                        const prox_body *bb);
 
-/* The polytope solver's answer, or, when it could not certify it (a speck of a box 1e-24 of the
- * pair's scale beside an ARB: its features collapse in the pair's frame, and one order of the pair
- * answered 1e-47 for 1e-42; a common point outside a speck's own planes), the support-function
- * method's certified one. */
-static prox_distance_result poly_distance(const prox_shape *a, const prox_shape *b)
+/* The support bodies of two valid shapes, for the support-function method. */
+static void bodies(const prox_shape *a, const prox_shape *b, prox_body *ba, prox_body *bb)
 {
-    prox_polytope pa, pb;
-    prox_vec3 ca, cb;
-    prox_distance_result r = {0};
-    if ((r.status = polys(a, b, &pa, &ca, &pb, &cb)) != PROX_OK) return r;
-    r = prox_poly_distance(&pa, ca, &pb, cb);
-    return r.certified ? r : convex_distance(a, b);
+    *ba = prox_body_make(a), *bb = prox_body_make(b);
 }
 
-static prox_signed_result poly_signed(const prox_shape *a, const prox_shape *b)
+/* The polytope solver's answer on the polytopes of pa, pb (POLY bodies of the shapes a, b), or, when
+ * it could not certify it (a speck of a box 1e-24 of the pair's scale beside an ARB: its features
+ * collapse in the pair's frame, and one order of the pair answered 1e-47 for 1e-42; a common point
+ * outside a speck's own planes), the support-function method's certified one. */
+static prox_distance_result poly_distance(const prox_shape *a, const prox_shape *b, const prox_body *pa,
+                                          const prox_body *pb)
 {
-    prox_polytope pa, pb;
-    prox_vec3 ca, cb;
-    prox_signed_result r = {0};
-    if ((r.status = polys(a, b, &pa, &ca, &pb, &cb)) != PROX_OK) return r;
-    r = prox_poly_signed(&pa, ca, &pb, cb);
-    if (r.sd > 0.0 && !(r.sd_lower > 0.0)) return convex_signed(a, b); /* a disjoint answer not certified */
+    prox_distance_result r = prox_poly_distance(&pa->x.poly, pa->c, &pb->x.poly, pb->c);
+    if (r.certified) return r;
+    prox_body ba, bb;
+    bodies(a, b, &ba, &bb);
+    return convex_distance(a, b, &ba, &bb);
+}
+
+static prox_signed_result poly_signed_engine(const prox_shape *a, const prox_shape *b)
+{
+    prox_body ba, bb;
+    bodies(a, b, &ba, &bb);
+    return convex_signed(a, b, &ba, &bb);
+}
+
+static prox_signed_result poly_signed(const prox_shape *a, const prox_shape *b, const prox_body *pa,
+                                      const prox_body *pb)
+{
+    const prox_polytope *P = &pa->x.poly, *Q = &pb->x.poly;
+    prox_vec3 ca = pa->c, cb = pb->c;
+    prox_signed_result r = prox_poly_signed(P, ca, Q, cb);
+    if (r.sd > 0.0 && !(r.sd_lower > 0.0)) return poly_signed_engine(a, b); /* a disjoint answer not certified */
     /* witnesses that miss p2 - p1 = sd n by more than the touching band (a needle's support edge
      * against a plate's face, 1e-10 S deep: 2e-8 S off): the support-function engine's */
-    double S = fmax(prox_v3_dist(ca, cb), fmax(pa.size, pb.size));
+    double S = fmax(prox_v3_dist(ca, cb), fmax(P->size, Q->size));
     if (prox_v3_norm(prox_v3_sub(prox_v3_sub(r.p2, r.p1), prox_v3_scale(r.normal, r.sd))) > PROX_TOL_TOUCH * S)
-        return convex_signed(a, b);
+        return poly_signed_engine(a, b);
     /* and witnesses off their solids (a sliver wedge 1e-78 S across touching a box: p1 3.5e-8 S away) */
-    if (!prox_polytope_contains(&pa, prox_v3_sub(r.p1, ca), PROX_TOL_TOUCH * S) ||
-        !prox_polytope_contains(&pb, prox_v3_sub(r.p2, cb), PROX_TOL_TOUCH * S))
-        return convex_signed(a, b);
+    if (!prox_polytope_contains(P, prox_v3_sub(r.p1, ca), PROX_TOL_TOUCH * S) ||
+        !prox_polytope_contains(Q, prox_v3_sub(r.p2, cb), PROX_TOL_TOUCH * S))
+        return poly_signed_engine(a, b);
     r.certified = 1; /* every separating axis of the two polytopes examined */
-    prox_body ba = prox_body_of_polytope(&pa, ca), bb = prox_body_of_polytope(&pb, cb);
-    prox_body_signed_bounds(&ba, &bb, &r);
+    prox_body_signed_bounds(pa, pb, &r);
     /* a disjoint answer whose witnesses the enclosure finds off their solids (a sliver 5.5e-48 thin
      * 1.4e-5 S from a speck: p1 off the wedge by its thickness, sd 8e-11 S short): the engine's */
-    if (r.sd > 0.0 && !r.certified) return convex_signed(a, b);
+    if (r.sd > 0.0 && !r.certified) return poly_signed_engine(a, b);
     return r;
+}
+
+/* The two polytopes of a polytope pair, each validated as it is built (one construction serves
+ * both): A's status first, as every query reports. */
+static prox_status poly_pair(const prox_shape *a, const prox_shape *b, prox_body *pa, prox_body *pb)
+{
+    prox_status st = poly_body_checked(a, pa);
+    return st != PROX_OK ? st : poly_body_checked(b, pb);
 }
 
 /* Coaxial solids of revolution (RCC, TRC, ELL, SPH on one axis) have a whole circle of optimal
  * directions, where the support method is degenerate: their meridian sections answer in closed form
- * (distance/curved_internal.h). */
-static prox_distance_result convex_distance(const prox_shape *a, const prox_shape *b)
+ * (distance/curved_internal.h). ba, bb: the shapes' support bodies (prox_body_make). */
+static prox_distance_result convex_distance(const prox_shape *a, const prox_shape *b, const prox_body *ba,
+                                            const prox_body *bb)
 {
     if (prox_coaxial_pair(a, b)) return prox_coaxial_distance(a, b);
-    prox_body ba = prox_body_make(a), bb = prox_body_make(b);
-    return prox_convex_distance(&ba, &bb);
+    return prox_convex_distance(ba, bb);
 }
 
 /* The support method's normal of a disjoint pair is the maximiser of -phi, where -phi is flat: it
@@ -300,16 +330,16 @@ static prox_distance_result convex_distance(const prox_shape *a, const prox_shap
  * more than PROX_TOL_WITNESS_DIR S apart (its rounding then below 1e-12 rad). */
 static prox_signed_result convex_signed_bodies(const prox_body *ba, const prox_body *bb);
 
-static prox_signed_result convex_signed(const prox_shape *a, const prox_shape *b)
+static prox_signed_result convex_signed(const prox_shape *a, const prox_shape *b, const prox_body *ba,
+                                        const prox_body *bb)
 {
-    prox_body ba = prox_body_make(a), bb = prox_body_make(b);
     if (prox_coaxial_pair(a, b)) {
         prox_signed_result c = prox_coaxial_signed_distance(a, b);
         c.certified = 1; /* the closed forms of the meridian sections */
-        prox_body_signed_bounds(&ba, &bb, &c);
+        prox_body_signed_bounds(ba, bb, &c);
         return c;
     }
-    return convex_signed_bodies(&ba, &bb);
+    return convex_signed_bodies(ba, bb);
 }
 
 static prox_signed_result convex_signed_bodies(const prox_body *ba, const prox_body *bb)
@@ -334,53 +364,63 @@ static double pair_scale(const prox_shape *a, const prox_shape *b)
     return fmax(prox_v3_dist(ca, cb), fmax(sa, sb));
 }
 
-/* A polytope against a curved body: both validated in the call's order (the polytope as it is
- * built, once), then the projections and feature pairs of distance/poly_body.c, answered in the
- * call's order of the pair; *ba, *bb the two bodies as the support-function engine takes them (a box
- * as its frame). Returns the outcome (PROX_PB_*), or -1 with r->status set. The pair's scale is the
- * engine's, max(|cA - cB|, size_A, size_B). */
-static int poly_body_fast(const prox_shape *a, const prox_shape *b, prox_distance_result *r, prox_body *ba,
-                          prox_body *bb)
+/* A polytope against a curved body, built: P the polytope (a POLY body), sp the polytope as the
+ * support-function engine takes it (a box as its frame, else P itself), body the curved one; first:
+ * the polytope is A. The projections and feature pairs of distance/poly_body.c, answered in the
+ * call's order of the pair; returns the outcome (PROX_PB_*). The pair's scale is the engine's,
+ * max(|cA - cB|, size_A, size_B). */
+typedef struct poly_curved {
+    const prox_body *P, *sp, *body;
+    int first;
+} poly_curved;
+
+static int poly_body_fast(const poly_curved *q, prox_distance_result *r)
 {
-    int first = kind_poly(a->kind);
-    const prox_shape *ps = first ? a : b;
-    prox_polytope P;
-    prox_vec3 cp;
-    prox_status st = first ? prox_polytope_checked(a, &P, &cp) : prox_shape_validate(a);
-    if (st == PROX_OK) st = first ? prox_shape_validate(b) : prox_polytope_checked(b, &P, &cp);
+    const prox_polytope *P = &q->P->x.poly;
+    double S = fmax(prox_v3_dist(q->P->c, q->body->c), fmax(P->size, q->body->size));
     *r = (prox_distance_result){0};
-    if ((r->status = st) != PROX_OK) return -1;
-    int box = ps->kind == PROX_SHAPE_BOX || ps->kind == PROX_SHAPE_RPP;
-    prox_body body = prox_body_make(first ? b : a), poly = box ? prox_body_make(ps) : prox_body_of_polytope(&P, cp);
-    *ba = first ? poly : body, *bb = first ? body : poly;
-    double S = fmax(prox_v3_dist(cp, body.c), fmax(P.size, body.size));
-    int v = prox_poly_body_fast(&P, cp, &body, S, r);
-    if (!first) *r = mirror_d(*r);
+    int v = prox_poly_body_fast(P, q->P->c, q->body, S, r);
+    if (!q->first) *r = mirror_d(*r);
     return v;
 }
 
-static prox_distance_result poly_body_distance(const prox_shape *a, const prox_shape *b)
+static prox_distance_result poly_body_distance(const poly_curved *q)
 {
     prox_distance_result r;
-    prox_body ba, bb;
-    int v = poly_body_fast(a, b, &r, &ba, &bb);
-    if (v != PROX_PB_OPEN) return r; /* settled, or an invalid shape */
-    return prox_convex_distance(&ba, &bb); /* never coaxial: a polytope is no solid of revolution */
+    int v = poly_body_fast(q, &r);
+    if (v != PROX_PB_OPEN) return r; /* settled */
+    /* never coaxial: a polytope is no solid of revolution */
+    return q->first ? prox_convex_distance(q->sp, q->body) : prox_convex_distance(q->body, q->sp);
 }
 
 /* A disjoint pair from the fast path, with its enclosure (core/signed_bounds.c); an overlapping or
  * unsettled one from the engine. */
-static prox_signed_result poly_body_signed(const prox_shape *a, const prox_shape *b)
+static prox_signed_result poly_body_signed(const poly_curved *q)
 {
     prox_distance_result d;
-    prox_body ba, bb;
-    int v = poly_body_fast(a, b, &d, &ba, &bb);
-    prox_signed_result r = {0};
-    if ((r.status = d.status) != PROX_OK) return r;
-    if (v != PROX_PB_DISJOINT) return convex_signed_bodies(&ba, &bb);
-    r = prox_signed_from_disjoint(&d);
-    prox_body_signed_bounds(&ba, &bb, &r);
+    int v = poly_body_fast(q, &d);
+    const prox_body *ba = q->first ? q->sp : q->body, *bb = q->first ? q->body : q->sp;
+    if (v != PROX_PB_DISJOINT) return convex_signed_bodies(ba, bb);
+    prox_signed_result r = prox_signed_from_disjoint(&d);
+    prox_body_signed_bounds(ba, bb, &r);
     return r;
+}
+
+/* The bodies of a polytope-curved pair of shapes: both validated in the call's order (the polytope as
+ * it is built, once). *P the polytope, *sp its engine body (a box's frame, or P), *body the curved. */
+static prox_status poly_curved_make(const prox_shape *a, const prox_shape *b, prox_body *P, prox_body *sp,
+                                    prox_body *body, poly_curved *q)
+{
+    int first = kind_poly(a->kind);
+    const prox_shape *ps = first ? a : b, *cs = first ? b : a;
+    prox_status st = first ? poly_body_checked(a, P) : prox_shape_validate(a);
+    if (st == PROX_OK) st = first ? prox_shape_validate(b) : poly_body_checked(b, P);
+    if (st != PROX_OK) return st;
+    int box = ps->kind == PROX_SHAPE_BOX || ps->kind == PROX_SHAPE_RPP;
+    if (box) *sp = prox_body_make(ps);
+    *body = prox_body_make(cs);
+    *q = (poly_curved){P, box ? sp : P, body, first};
+    return PROX_OK;
 }
 
 /* ---- public queries ---- */
@@ -410,10 +450,19 @@ PROX_API prox_distance_result prox_shape_distance(const prox_shape *a, const pro
     default: break;
     }
     route rt = route_shapes(a, b);
-    if (rt == ROUTE_POLY) return poly_distance(a, b); /* validates as it builds */
-    if (rt == ROUTE_POLY_BODY) return poly_body_distance(a, b);
+    prox_body x, y, z;
+    if (rt == ROUTE_POLY) { /* validates as it builds */
+        if ((r.status = poly_pair(a, b, &x, &y)) != PROX_OK) return r;
+        return poly_distance(a, b, &x, &y);
+    }
+    if (rt == ROUTE_POLY_BODY) {
+        poly_curved q;
+        if ((r.status = poly_curved_make(a, b, &x, &y, &z, &q)) != PROX_OK) return r;
+        return poly_body_distance(&q);
+    }
     if ((r.status = validate2(a, b)) != PROX_OK) return r;
-    return convex_distance(a, b);
+    bodies(a, b, &x, &y);
+    return convex_distance(a, b, &x, &y);
 }
 
 /* A sphere s against any shape b: the exact point-to-body distance (closed form, its enclosure set by
@@ -441,10 +490,33 @@ PROX_API prox_signed_result prox_shape_signed_distance(const prox_shape *a, cons
     default: break;
     }
     route rt = route_shapes(a, b);
-    if (rt == ROUTE_POLY) return poly_signed(a, b); /* validates as it builds */
-    if (rt == ROUTE_POLY_BODY) return poly_body_signed(a, b);
+    prox_body x, y, z;
+    if (rt == ROUTE_POLY) { /* validates as it builds */
+        if ((r.status = poly_pair(a, b, &x, &y)) != PROX_OK) return r;
+        return poly_signed(a, b, &x, &y);
+    }
+    if (rt == ROUTE_POLY_BODY) {
+        poly_curved q;
+        if ((r.status = poly_curved_make(a, b, &x, &y, &z, &q)) != PROX_OK) return r;
+        return poly_body_signed(&q);
+    }
     if ((r.status = validate2(a, b)) != PROX_OK) return r;
-    return convex_signed(a, b);
+    bodies(a, b, &x, &y);
+    return convex_signed(a, b, &x, &y);
+}
+
+/* The verdict of the exact distance: its common point is checked in both solids, its separation
+ * certified by a gap (the sign of the distance is the verdict). */
+static prox_test_result verdict_of(prox_distance_result d)
+{
+    prox_test_result r = {0};
+    r.status = d.status;
+    r.intersect = d.intersect;
+    if (d.status == PROX_OK && !d.intersect && d.distance > 0.0) {
+        r.direction = prox_v3_normalize(prox_v3_sub(d.p2, d.p1));
+        r.value = d.certificate_gap;
+    }
+    return r;
 }
 
 PROX_API prox_test_result prox_shape_test(const prox_shape *a, const prox_shape *b)
@@ -464,16 +536,7 @@ PROX_API prox_test_result prox_shape_test(const prox_shape *a, const prox_shape 
     }
     default: break;
     }
-    /* The verdict of the exact distance: its common point is checked in both solids, its separation
-     * certified by a gap (the sign of the distance is the verdict). */
-    prox_distance_result d = prox_shape_distance(a, b);
-    r.status = d.status;
-    r.intersect = d.intersect;
-    if (d.status == PROX_OK && !d.intersect && d.distance > 0.0) {
-        r.direction = prox_v3_normalize(prox_v3_sub(d.p2, d.p1));
-        r.value = d.certificate_gap;
-    }
-    return r;
+    return verdict_of(prox_shape_distance(a, b));
 }
 
 /* Containment of the specialised pairs (kinds RCC, BOX, SPH after RPP -> BOX). */
@@ -634,4 +697,94 @@ PROX_API prox_status prox_shape_translated(const prox_shape *s, prox_vec3 t, pro
     prox_status st = prox_shape_validate(&o);
     if (st == PROX_OK) *out = o;
     return st;
+}
+
+/* ---- prepared solids (prox/solid.h) ----
+ * A solid keeps what the routes above build on every call: its polytope (a POLY body) when it is a
+ * polytope kind that keeps its shape, and its support body (prox_body_make's; for RHP, WED and ARB
+ * the polytope itself, as the polytope-curved route takes it). The routes that build nothing dear
+ * (the specialised pairs of RCC, BOX, RPP, SPH and a sphere against anything) take the shapes. */
+struct prox_solid {
+    prox_shape shape;
+    int fits;       /* a polytope kind whose polytope keeps its shape (poly_fits): poly is built */
+    prox_body poly; /* the polytope (kind PROX_BODY_POLY) */
+    prox_body body; /* the support body */
+};
+
+PROX_API prox_solid *prox_solid_new(const prox_shape *s, prox_status *status)
+{
+    prox_status st = !s ? PROX_EINVAL_ARG : check_kinds(s, s);
+    prox_solid *o = NULL;
+    if (st == PROX_OK && !(o = malloc(sizeof *o))) st = PROX_ENOMEM;
+    if (st == PROX_OK) {
+        o->shape = *s;
+        o->fits = kind_poly(s->kind) && poly_fits(s);
+        st = o->fits ? poly_body_checked(s, &o->poly) : prox_shape_validate(s);
+        if (st == PROX_OK) {
+            int prism = o->fits && s->kind != PROX_SHAPE_BOX && s->kind != PROX_SHAPE_RPP;
+            if (prism) o->body = o->poly;
+            else o->body = prox_body_make(s);
+        }
+    }
+    if (st != PROX_OK) free(o), o = NULL;
+    if (status) *status = st;
+    return o;
+}
+
+PROX_API void prox_solid_free(prox_solid *s) { free(s); }
+
+PROX_API const prox_shape *prox_solid_shape(const prox_solid *s) { return s ? &s->shape : NULL; }
+
+/* The route of a pair of solids: route_shapes on what the solids know. */
+static route solid_route(const prox_solid *a, const prox_solid *b)
+{
+    route r = route_of(a->shape.kind, b->shape.kind);
+    if (r == ROUTE_POLY_BODY) return (kind_poly(a->shape.kind) ? a : b)->fits ? r : ROUTE_CONVEX;
+    return r == ROUTE_POLY && !(a->fits && b->fits) ? ROUTE_CONVEX : r;
+}
+
+/* The polytope-curved pair of two solids. */
+static poly_curved solid_poly_curved(const prox_solid *a, const prox_solid *b)
+{
+    int first = kind_poly(a->shape.kind);
+    const prox_solid *p = first ? a : b, *c = first ? b : a;
+    return (poly_curved){&p->poly, &p->body, &c->body, first};
+}
+
+PROX_API prox_distance_result prox_solid_distance(const prox_solid *a, const prox_solid *b)
+{
+    if (!a || !b) return (prox_distance_result){.status = PROX_EINVAL_ARG};
+    const prox_shape *sa = &a->shape, *sb = &b->shape;
+    switch (solid_route(a, b)) {
+    case ROUTE_POLY: return poly_distance(sa, sb, &a->poly, &b->poly);
+    case ROUTE_POLY_BODY: {
+        poly_curved q = solid_poly_curved(a, b);
+        return poly_body_distance(&q);
+    }
+    case ROUTE_CONVEX: return convex_distance(sa, sb, &a->body, &b->body);
+    default: return prox_shape_distance(sa, sb);
+    }
+}
+
+PROX_API prox_signed_result prox_solid_signed_distance(const prox_solid *a, const prox_solid *b)
+{
+    if (!a || !b) return (prox_signed_result){.status = PROX_EINVAL_ARG};
+    const prox_shape *sa = &a->shape, *sb = &b->shape;
+    switch (solid_route(a, b)) {
+    case ROUTE_POLY: return poly_signed(sa, sb, &a->poly, &b->poly);
+    case ROUTE_POLY_BODY: {
+        poly_curved q = solid_poly_curved(a, b);
+        return poly_body_signed(&q);
+    }
+    case ROUTE_CONVEX: return convex_signed(sa, sb, &a->body, &b->body);
+    default: return prox_shape_signed_distance(sa, sb);
+    }
+}
+
+PROX_API prox_test_result prox_solid_test(const prox_solid *a, const prox_solid *b)
+{
+    if (!a || !b) return (prox_test_result){.status = PROX_EINVAL_ARG};
+    route r = route_of(a->shape.kind, b->shape.kind);
+    if (r == ROUTE_OLD || r == ROUTE_SPH_A || r == ROUTE_SPH_B) return prox_shape_test(&a->shape, &b->shape);
+    return verdict_of(prox_solid_distance(a, b));
 }
