@@ -227,6 +227,7 @@ prox_body prox_body_scaled(const prox_body *b, double f)
         for (int i = 0; i < b->x.poly.nv; ++i) s.x.poly.v[i] = prox_v3_scale(b->x.poly.v[i], f);
         for (int i = 0; i < b->x.poly.nf; ++i) s.x.poly.d[i] *= f;
         s.x.poly.size *= f;
+        s.x.poly.lo = prox_v3_scale(b->x.poly.lo, f), s.x.poly.hi = prox_v3_scale(b->x.poly.hi, f); /* f > 0 */
         break;
     case PROX_BODY_CONE: s.x.cone.hh *= f, s.x.cone.r1 *= f, s.x.cone.r2 *= f; break;
     case PROX_BODY_ECYL: s.x.ecyl.hh *= f, s.x.ecyl.a1 *= f, s.x.ecyl.a2 *= f; break;

@@ -180,6 +180,20 @@ static prox_vec3 centre(prox_polytope *p, prox_vec3 o)
     return prox_v3_add(o, g);
 }
 
+/* The corners' bounding box (empty, lo > hi, without corners): prox_polytope_contains tests it. */
+static void corner_box(prox_polytope *p)
+{
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int i = 0; i < p->nv; ++i) {
+        const double v[3] = {p->v[i].x, p->v[i].y, p->v[i].z};
+        for (int k = 0; k < 3; ++k) {
+            if (v[k] < lo[k]) lo[k] = v[k];
+            if (v[k] > hi[k]) hi[k] = v[k];
+        }
+    }
+    p->lo = prox_v3(lo[0], lo[1], lo[2]), p->hi = prox_v3(hi[0], hi[1], hi[2]);
+}
+
 /* Right prism over the polygon q[0..m-1] (relative to the anchor o) with height vector h; side i
  * runs from q[i] to q[i+1] and has facet number side[i] and unit outward normal sn[i] (the card's own
  * direction: a normal from the corners of a thin side would carry their rounding divided by its
@@ -221,6 +235,7 @@ static prox_vec3 prism(prox_polytope *p, prox_vec3 o, const prox_vec3 *q, const 
     offsets(p);
     prism_edges(p, m);
     prism_diameter(p, m, h);
+    corner_box(p);
     return c;
 }
 
@@ -357,8 +372,7 @@ static double turn(prox_vec3 a, prox_vec3 b, prox_vec3 c, prox_vec3 n)
     return prox_v3_dot(prox_v3_cross(prox_v3_sub(b, a), prox_v3_sub(c, a)), n);
 }
 
-/* 1 when the sides p -> q and r -> s of a plane loop (normal n) cross. */
-static int sides_cross(prox_vec3 p, prox_vec3 q, prox_vec3 r, prox_vec3 s, prox_vec3 n)
+int prox_sides_cross(prox_vec3 p, prox_vec3 q, prox_vec3 r, prox_vec3 s, prox_vec3 n)
 {
     return turn(p, q, r, n) * turn(p, q, s, n) < 0.0 && turn(r, s, p, n) * turn(r, s, q, n) < 0.0;
 }
@@ -381,8 +395,8 @@ int prox_arb_face_loop(const prox_arb *a, int f, int idx[4])
     prox_vec3 m = prox_v3_cross(prox_v3_sub(x[1], x[0]), prox_v3_sub(x[3], x[0]));
     if (prox_v3_norm2(m) > prox_v3_norm2(nrm)) nrm = m; /* a bow tie's two halves cancel in the sum */
     int t;
-    if (sides_cross(x[1], x[2], x[3], x[0], nrm)) t = idx[2], idx[2] = idx[3], idx[3] = t;
-    else if (sides_cross(x[0], x[1], x[2], x[3], nrm)) t = idx[1], idx[1] = idx[2], idx[2] = t;
+    if (prox_sides_cross(x[1], x[2], x[3], x[0], nrm)) t = idx[2], idx[2] = idx[3], idx[3] = t;
+    else if (prox_sides_cross(x[0], x[1], x[2], x[3], nrm)) t = idx[1], idx[1] = idx[2], idx[2] = t;
     return 4;
 }
 
@@ -391,13 +405,11 @@ prox_vec3 prox_polytope_arb(const prox_arb *a, prox_polytope *p, double *least, 
     p->nv = p->nf = p->ne = 0; /* the counts and the small per-face tables; finish() fills the rest */
     memset(p->fnv, 0, sizeof p->fnv);
     memset(p->facet, 0, sizeof p->facet);
-    int map[9], dig[6][4];
+    int map[9], loops[6][4], nl[6];
     unsigned used = 0; /* bit c: corner c named by some face */
     for (int f = 0; f < 6; ++f) {
-        if (a->face[f] <= 0) continue;
-        arb_digits(a->face[f], dig[f]);
-        for (int i = 0; i < 4; ++i)
-            if (dig[f][i] >= 1 && dig[f][i] <= 8) used |= 1u << dig[f][i];
+        nl[f] = prox_arb_face_loop(a, f, loops[f]);
+        for (int i = 0; i < nl[f]; ++i) used |= 1u << (loops[f][i] + 1);
     }
     prox_vec3 o = prox_v3(0, 0, 0);
     for (int c = 1; c <= 8; ++c)
@@ -415,7 +427,7 @@ prox_vec3 prox_polytope_arb(const prox_arb *a, prox_polytope *p, double *least, 
     for (int i = 0; i < p->nv; ++i) g = prox_v3_add(g, p->v[i]);
     if (p->nv) g = prox_v3_scale(g, 1.0 / p->nv);
     for (int f = 0; f < 6; ++f) {
-        int loop[4], m = prox_arb_face_loop(a, f, loop);
+        const int *loop = loops[f], m = nl[f];
         if (a->face[f] <= 0) continue;
         int k = p->nf;
         for (int i = 0; i < m; ++i) p->fv[k][i] = (unsigned char)map[loop[i] + 1];
@@ -433,6 +445,7 @@ prox_vec3 prox_polytope_arb(const prox_arb *a, prox_polytope *p, double *least, 
     }
     prox_vec3 c = p->nv ? centre(p, o) : o;
     finish(p, least);
+    corner_box(p);
     return c;
 }
 
@@ -454,6 +467,7 @@ prox_vec3 prox_polytope_make(const prox_shape *s, prox_polytope *p)
     default: break;
     }
     memset(p, 0, sizeof *p);
+    corner_box(p);
     return prox_v3(0, 0, 0);
 }
 
@@ -483,16 +497,8 @@ int prox_polytope_contains(const prox_polytope *p, prox_vec3 y, double tol)
         if (prox_v3_dot(p->n[f], y) > p->d[f] + tol) return 0;
     /* The corners' box too: a sliver's planes, cross products of edges 1e-40 of their length apart,
      * can pass a point 1e71 times the sliver's size away from it. */
-    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (int i = 0; i < p->nv; ++i) {
-        const double v[3] = {p->v[i].x, p->v[i].y, p->v[i].z};
-        for (int k = 0; k < 3; ++k) {
-            if (v[k] < lo[k]) lo[k] = v[k];
-            if (v[k] > hi[k]) hi[k] = v[k];
-        }
-    }
-    return y.x >= lo[0] - tol && y.y >= lo[1] - tol && y.z >= lo[2] - tol && y.x <= hi[0] + tol &&
-           y.y <= hi[1] + tol && y.z <= hi[2] + tol;
+    return y.x >= p->lo.x - tol && y.y >= p->lo.y - tol && y.z >= p->lo.z - tol && y.x <= p->hi.x + tol &&
+           y.y <= p->hi.y + tol && y.z <= p->hi.z + tol;
 }
 
 /* Closest point of the segment [a, b] to y. */

@@ -27,6 +27,7 @@ typedef struct prox_polytope {
     unsigned char e[PROX_POLY_MAXE][2];                /* edge corners */
     unsigned char ef[PROX_POLY_MAXE][2];               /* the two faces meeting at each edge */
     double size;                                       /* largest corner-to-corner distance */
+    prox_vec3 lo, hi;                                  /* the corners' bounding box (relative to c) */
 } prox_polytope;
 
 /* The polytope of a valid BOX, RPP, RHP, WED or ARB; returns its reference point c (absolute). */
@@ -83,6 +84,10 @@ prox_vec3 prox_polytope_rhp(const prox_rhp *h, const prox_rhp_section *hx, prox_
 /* Corner indices (0-based) of ARB face entry f in order round the face, however the card names them;
  * returns their count (0 for an unused entry). */
 int prox_arb_face_loop(const prox_arb *a, int f, int idx[4]);
+
+/* 1 when the sides p -> q and r -> s of a plane loop with normal n cross (each side's line
+ * separates the other's ends): a four-corner face named out of order round the face. */
+int prox_sides_cross(prox_vec3 p, prox_vec3 q, prox_vec3 r, prox_vec3 s, prox_vec3 n);
 
 /* The polytope of an ARB (valid card entries; the solid itself is checked by the validator) and
  * *least, the smallest squared distance between two of its corners; returns its reference point.

@@ -205,24 +205,14 @@ static prox_status arb_faces_ok(const prox_arb *a)
     return nf >= 4 ? PROX_OK : PROX_EINVAL_ARB_CONVEX;
 }
 
-/* Orientation of c relative to the directed line a -> b, seen along n. */
-static double orient(prox_vec3 a, prox_vec3 b, prox_vec3 c, prox_vec3 n)
-{
-    return prox_v3_dot(prox_v3_cross(prox_v3_sub(b, a), prox_v3_sub(c, a)), n);
-}
-
 /* A four-corner loop crosses itself (its corners are not named in order round the face): one pair
- * of opposite sides cross. */
+ * of opposite sides cross (the builder's test, core/polytope.c). */
 static int loop_crossed(const prox_polytope *p, int f)
 {
     if (p->fnv[f] != 4) return 0;
     prox_vec3 x[4], n = p->n[f];
     for (int i = 0; i < 4; ++i) x[i] = p->v[p->fv[f][i]];
-    for (int k = 0; k < 2; ++k) {
-        prox_vec3 a = x[k], b = x[k + 1], c = x[k + 2], d = x[(k + 3) % 4];
-        if (orient(a, b, c, n) * orient(a, b, d, n) < 0.0 && orient(c, d, a, n) * orient(c, d, b, n) < 0.0) return 1;
-    }
-    return 0;
+    return prox_sides_cross(x[0], x[1], x[2], x[3], n) || prox_sides_cross(x[1], x[2], x[3], x[0], n);
 }
 
 /* Corners of each face turn the same way about its normal (a convex loop). */

@@ -24,6 +24,7 @@
  * The signed distance (depth when they overlap) composes this with the support-function engine of
  * src/sat and lives in src/query/box_rcc_signed.c. */
 #include "distance/box_internal.h"
+#include "core/edge_root.h"
 #include "core/tol.h"
 #include "prox/primitives.h"
 
@@ -447,49 +448,38 @@ static prox_vec3 br_box_closest(const prox_bframe *B, prox_vec3 x, double l[3], 
 
 /* G(t) = (x - P(x)).a_k at the point x of local coordinates le with le[k] = t (P the cylinder's
  * closest point), with x and y = P(x). */
-static double br_edge_g(const prox_bframe *B, const prox_cyl *c, int k, double le[3], double t, prox_vec3 *x,
-                        prox_vec3 *y)
+typedef struct br_edge_ctx {
+    const prox_bframe *B;
+    const prox_cyl *c;
+    int k;
+    double le[3];
+    prox_vec3 *x, *y;
+} br_edge_ctx;
+
+static double br_edge_g(void *ctx, double t)
 {
-    le[k] = t;
-    *x = prox_bframe_point(B, le);
-    *y = prox_cyl_closest(c, *x);
-    return prox_v3_dot(prox_v3_sub(*x, *y), B->a[k]);
+    br_edge_ctx *q = ctx;
+    q->le[q->k] = t;
+    *q->x = prox_bframe_point(q->B, q->le);
+    *q->y = prox_cyl_closest(q->c, *q->x);
+    return prox_v3_dot(prox_v3_sub(*q->x, *q->y), q->B->a[q->k]);
 }
 
 /* The edge along a_k through the local point l (its other two coordinates at their bounds) against the
- * solid cylinder. The distance from a point of the edge, x(t) = m + sum l_j a_j with l_k = t, to the
- * convex cylinder is a convex function of t, and its half squared derivative G(t) = (x(t) - P(x(t))).a_k
- * (P the closest point of the cylinder) is continuous and nondecreasing: the closest pair is at the
- * root of G in [-h_k, h_k] or at an end. Regula falsi with the Illinois modification (Dowell and
- * Jarratt 1971) keeps a bracket and converges superlinearly where G is smooth; it stops when the
- * bracket is a few ulps wide. t0 (the box point's coordinate) starts it. Returns the distance of the
- * pair (x on the edge, y on the cylinder). */
+ * solid cylinder: x(t) = m + sum l_j a_j with l_k = t, the root of G in [-h_k, h_k] or an end
+ * (core/edge_root.h), to a bracket a few ulps wide. t0 (the box point's coordinate) starts it.
+ * Returns the distance of the pair (x on the edge, y on the cylinder). */
 static double br_edge(const prox_bframe *B, const prox_cyl *c, int k, const double l[3], double t0, prox_vec3 *x,
                       prox_vec3 *y)
 {
-    double le[3] = {l[0], l[1], l[2]}, lo = -B->h[k], hi = B->h[k];
-    double glo = br_edge_g(B, c, k, le, lo, x, y);
+    br_edge_ctx q = {B, c, k, {l[0], l[1], l[2]}, x, y};
+    double lo = -B->h[k], hi = B->h[k];
+    double glo = br_edge_g(&q, lo);
     if (glo >= 0.0) return prox_v3_dist(*x, *y);
-    double ghi = br_edge_g(B, c, k, le, hi, x, y);
+    double ghi = br_edge_g(&q, hi);
     if (ghi <= 0.0) return prox_v3_dist(*x, *y);
     double t = t0 > lo && t0 < hi ? t0 : 0.5 * (lo + hi);
-    int side = 0;
-    for (int it = 0; it < 100; ++it) {
-        double g = br_edge_g(B, c, k, le, t, x, y);
-        if (g == 0.0) break;
-        if (g < 0.0) {
-            lo = t, glo = g;
-            if (side == -1) ghi *= 0.5; /* the same end twice: halve the other's value (Illinois) */
-            side = -1;
-        } else {
-            hi = t, ghi = g;
-            if (side == 1) glo *= 0.5;
-            side = 1;
-        }
-        if (hi - lo <= 4.0 * DBL_EPSILON * B->h[k]) break;
-        double tn = lo - glo * (hi - lo) / (ghi - glo);
-        t = tn > lo && tn < hi ? tn : 0.5 * (lo + hi);
-    }
+    prox_edge_root(br_edge_g, &q, lo, hi, glo, ghi, t, 4.0 * DBL_EPSILON * B->h[k]);
     return prox_v3_dist(*x, *y);
 }
 

@@ -25,6 +25,7 @@
 #include <float.h>
 
 #include "core/body.h"
+#include "core/edge_root.h"
 #include "core/tol.h"
 #include "distance/poly_internal.h"
 #include "prox/query.h"
@@ -39,40 +40,30 @@ static double pb_gap(const prox_polytope *p, const prox_body *b, prox_vec3 n)
 }
 
 /* G(t) = (x(t) - P_B(x(t))).e at x(t) = a + t e, with x and y = P_B(x). */
-static double pb_edge_g(const prox_body *b, prox_vec3 a, prox_vec3 e, double t, prox_vec3 *x, prox_vec3 *y)
+typedef struct pb_edge_ctx {
+    const prox_body *b;
+    prox_vec3 a, e, *x, *y;
+} pb_edge_ctx;
+
+static double pb_edge_g(void *ctx, double t)
 {
-    *x = prox_v3_mad(a, t, e);
-    *y = prox_body_closest(b, *x);
-    return prox_v3_dot(prox_v3_sub(*x, *y), e);
+    pb_edge_ctx *q = ctx;
+    *q->x = prox_v3_mad(q->a, t, q->e);
+    *q->y = prox_body_closest(q->b, *q->x);
+    return prox_v3_dot(prox_v3_sub(*q->x, *q->y), q->e);
 }
 
-/* The segment [a, c] against the body: the root of G by regula falsi (Illinois; Dowell and Jarratt
- * 1971) from t0, to a bracket a few ulps wide, or an end. Returns |y - x| of the pair (x on the
- * segment, y on B). */
+/* The segment [a, c] against the body: the root of G (core/edge_root.h) from t0, to a bracket a few
+ * ulps wide, or an end. Returns |y - x| of the pair (x on the segment, y on B). */
 static double pb_edge(const prox_body *b, prox_vec3 a, prox_vec3 c, double t0, prox_vec3 *x, prox_vec3 *y)
 {
-    prox_vec3 e = prox_v3_sub(c, a);
-    double lo = 0.0, hi = 1.0, glo = pb_edge_g(b, a, e, lo, x, y);
+    pb_edge_ctx q = {b, a, prox_v3_sub(c, a), x, y};
+    double lo = 0.0, hi = 1.0, glo = pb_edge_g(&q, lo);
     if (glo >= 0.0) return prox_v3_dist(*x, *y);
-    double ghi = pb_edge_g(b, a, e, hi, x, y);
+    double ghi = pb_edge_g(&q, hi);
     if (ghi <= 0.0) return prox_v3_dist(*x, *y);
     double t = t0 > lo && t0 < hi ? t0 : 0.5;
-    for (int it = 0, side = 0; it < 100; ++it) {
-        double g = pb_edge_g(b, a, e, t, x, y);
-        if (g == 0.0) break;
-        if (g < 0.0) {
-            lo = t, glo = g;
-            if (side == -1) ghi *= 0.5; /* the same end twice: halve the other's value */
-            side = -1;
-        } else {
-            hi = t, ghi = g;
-            if (side == 1) glo *= 0.5;
-            side = 1;
-        }
-        if (hi - lo <= 4.0 * DBL_EPSILON) break;
-        double tn = lo - glo * (hi - lo) / (ghi - glo);
-        t = tn > lo && tn < hi ? tn : 0.5 * (lo + hi);
-    }
+    prox_edge_root(pb_edge_g, &q, lo, hi, glo, ghi, t, 4.0 * DBL_EPSILON);
     return prox_v3_dist(*x, *y);
 }
 

@@ -958,10 +958,11 @@ static prox_distance_result distance_entry(const prox_polytope *a, prox_vec3 ca,
      * of the pair's scale loses its planes' offsets to rounding (a box 1e-67 across, 1.4e-5 S from a
      * sliver wedge, was taken as meeting it). Beside the band, the rounding of the point's and the
      * references' coordinates. */
-    double tol = PROX_TOL_TOUCH * S / u + 4.0 * DBL_EPSILON * (prox_v3_maxabs(r.p1) + prox_v3_maxabs(ca) + prox_v3_maxabs(cb));
-    if (r.intersect && !(prox_polytope_contains(a, prox_v3_sub(r.p1, ca), tol) &&
-                         prox_polytope_contains(b, prox_v3_sub(r.p1, cb), tol)))
-        r.certified = 0;
+    if (r.intersect) {
+        double tol = PROX_TOL_TOUCH * S / u + 4.0 * DBL_EPSILON * (prox_v3_maxabs(r.p1) + prox_v3_maxabs(ca) + prox_v3_maxabs(cb));
+        if (!(prox_polytope_contains(a, prox_v3_sub(r.p1, ca), tol) && prox_polytope_contains(b, prox_v3_sub(r.p1, cb), tol)))
+            r.certified = 0;
+    }
     return r;
 }
 
