@@ -501,16 +501,6 @@ int prox_polytope_contains(const prox_polytope *p, prox_vec3 y, double tol)
            y.y <= p->hi.y + tol && y.z <= p->hi.z + tol;
 }
 
-/* Closest point of the segment [a, b] to y. */
-static prox_vec3 seg_closest(prox_vec3 a, prox_vec3 b, prox_vec3 y)
-{
-    prox_vec3 ab = prox_v3_sub(b, a);
-    double l2 = prox_v3_norm2(ab);
-    double t = l2 > 0.0 ? prox_v3_dot(prox_v3_sub(y, a), ab) / l2 : 0.0;
-    t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
-    return prox_v3_mad(a, t, ab);
-}
-
 /* Closest point of face f (a convex polygon) to y: the foot on its plane when that lies in the face
  * (prox_polytope_face_foot), else the nearest point of its edges. */
 static prox_vec3 face_closest(const prox_polytope *p, int f, prox_vec3 y)
@@ -521,7 +511,7 @@ static prox_vec3 face_closest(const prox_polytope *p, int f, prox_vec3 y)
     prox_vec3 best = p->v[p->fv[f][0]];
     double bd = INFINITY;
     for (int i = 0; i < m; ++i) {
-        prox_vec3 c = seg_closest(p->v[p->fv[f][i]], p->v[p->fv[f][i + 1 < m ? i + 1 : 0]], y);
+        prox_vec3 c = prox_seg_closest(p->v[p->fv[f][i]], p->v[p->fv[f][i + 1 < m ? i + 1 : 0]], y);
         double dd = prox_v3_norm2(prox_v3_sub(c, y));
         if (dd < bd) bd = dd, best = c;
     }

@@ -77,12 +77,35 @@ static double pb_face(const prox_polytope *p, const prox_body *b, int f, prox_ve
         *y = low;
         return prox_v3_dist(*x, *y);
     }
-    double best = INFINITY;
-    int m = p->fnv[f];
+    /* The border edges, least bound first: edge k's distance is at least the gap of the support
+     * functions along the unit n_k from its point nearest to B's lowest point towards that point
+     * (weak duality), so an edge whose bound is no less than the nearest pair found holds none
+     * nearer, and a pair that meets (distance 0) ends the search. */
+    int m = p->fnv[f], ord[PROX_POLY_MAXFV];
+    double lb[PROX_POLY_MAXFV], t0[PROX_POLY_MAXFV]; /* t0: the edge's point nearest B's lowest, the root's start */
     for (int k = 0; k < m; ++k) {
+        prox_vec3 a = p->v[p->fv[f][k]], c = p->v[p->fv[f][k + 1 < m ? k + 1 : 0]], e = prox_v3_sub(c, a);
+        double l2 = prox_v3_norm2(e), t = l2 > 0.0 ? prox_v3_dot(prox_v3_sub(low, a), e) / l2 : 0.0;
+        t0[k] = t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+        prox_vec3 w = prox_v3_sub(low, prox_v3_mad(a, t, e));
+        double len = prox_v3_norm(w);
+        lb[k] = -INFINITY;
+        if (len > 0.0) {
+            prox_vec3 nk = prox_v3_scale(w, 1.0 / len);
+            double sa = prox_v3_dot(nk, a), sc = prox_v3_dot(nk, c);
+            lb[k] = -prox_body_support(b, prox_v3_neg(nk)) - (sa > sc ? sa : sc);
+        }
+        int at = k;
+        for (; at > 0 && lb[ord[at - 1]] > lb[k]; --at) ord[at] = ord[at - 1];
+        ord[at] = k;
+    }
+    double best = INFINITY;
+    for (int i = 0; i < m && lb[ord[i]] < best; ++i) {
+        int k = ord[i];
         prox_vec3 u, v;
-        double d = pb_edge(b, p->v[p->fv[f][k]], p->v[p->fv[f][k + 1 < m ? k + 1 : 0]], 0.5, &u, &v);
+        double d = pb_edge(b, p->v[p->fv[f][k]], p->v[p->fv[f][k + 1 < m ? k + 1 : 0]], t0[k], &u, &v);
         if (d < best) best = d, *x = u, *y = v;
+        if (!(best > 0.0)) break;
     }
     return best;
 }
