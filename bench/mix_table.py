@@ -6,9 +6,10 @@
 Each RUN is the --csv output of `prox_bench --quick --repeats 5 --filter mix/`. OUT.csv receives, per
 case, the median over the runs of mean_ns, median_ns and p99_ns and the largest err_max (the other
 columns from the last run), and OUT.txt (OUT.csv with .txt) the same rows as space-separated text; stdout receives one markdown row per pair type: the share that overlaps,
-prox's and FCL's mean distance time and their ratio, prox's signed mean (p99), its mean on the
-overlapping pairs alone, FCL's signed mean and the ratio, Coal's and Bullet's means, and the worst
-error over S of prox (distance or signed), FCL distance, FCL signed, Coal and Bullet.
+prox's mean distance time on shapes and on prepared solids, FCL's, and the two ratios; prox's signed
+mean on shapes and on solids (the solids' p99), the solids' mean on the overlapping pairs alone, FCL's
+signed mean and the two ratios, Coal's and Bullet's means, and the worst error over S of prox (any of
+its four rows), FCL distance, FCL signed, Coal and Bullet.
 """
 import csv
 import statistics
@@ -68,8 +69,9 @@ def table(m):
         fam = case.split("/")[1]
         if fam not in fams:
             fams.append(fam)
-    print("| pair | overlap | prox distance | FCL distance | ratio | prox signed (p99) | prox signed, overlapping "
-          "| FCL signed | ratio | Coal signed | Bullet | worst error: prox / FCL dist / FCL signed / Coal / Bullet |")
+    print("| pair | overlap | prox distance: shape / solid | FCL distance | ratio: shape / solid "
+          "| prox signed: shape / solid (solid p99) | solid signed, overlapping | FCL signed | ratio: shape / solid "
+          "| Coal signed | Bullet | worst error: prox / FCL dist / FCL signed / Coal / Bullet |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for fam in fams:
         def get(method, col="mean_ns", subset="all"):
@@ -77,14 +79,17 @@ def table(m):
             return num(row[col]) if row else None
         note = m["mix/%s/prox/distance/all" % fam]["note"]
         over = [kv.split("=")[1] for kv in note.split(";") if kv.startswith("overlapping=")][0]
-        pd, fd, ps, fs = get("prox/distance"), get("fcl/distance"), get("prox/signed"), get("fcl/signed")
-        own = [e for e in (get("prox/distance", "err_max"), get("prox/signed", "err_max")) if e is not None]
+        pd, qd, fd = get("prox/distance"), get("prox-solid/distance"), get("fcl/distance")
+        ps, qs, fs = get("prox/signed"), get("prox-solid/signed"), get("fcl/signed")
+        own = [e for e in (get(k, "err_max") for k in ("prox/distance", "prox/signed", "prox-solid/distance",
+                                                        "prox-solid/signed")) if e is not None]
         errs = [max(own) if own else None] + [get(k, "err_max") for k in ("fcl/distance", "fcl/signed", "coal/signed",
                                                                         "bullet/gjk-epa")]
-        print("| %s | %s | %s | %s | %s | %s (%s) | %s | %s | %s | %s | %s | %s |" % (
-            fam, over, t(pd), t(fd), ratio(pd, fd), t(ps), t(get("prox/signed", "p99_ns")),
-            t(get("prox/signed", subset="overlap")), t(fs), ratio(ps, fs), t(get("coal/signed")),
-            t(get("bullet/gjk-epa")), " / ".join(err(e) for e in errs)))
+        print("| %s | %s | %s / %s | %s | %s / %s | %s / %s (%s) | %s | %s | %s / %s | %s | %s | %s |" % (
+            fam, over, t(pd), t(qd), t(fd), ratio(pd, fd), ratio(qd, fd), t(ps), t(qs),
+            t(get("prox-solid/signed", "p99_ns")), t(get("prox-solid/signed", subset="overlap")), t(fs),
+            ratio(ps, fs), ratio(qs, fs), t(get("coal/signed")), t(get("bullet/gjk-epa")),
+            " / ".join(err(e) for e in errs)))
 
 
 def main():

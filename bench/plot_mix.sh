@@ -15,7 +15,7 @@ for fam in $(awk -F, 'FNR > 1 { split($1, p, "/"); if (!seen[p[2]]++) print p[2]
     awk -F, -v f="mix/$fam/" -v prox="$prox" -v peer="$peer" '
         FNR > 1 && index($1, f) == 1 && $1 ~ /\/all$/ && $7 != "" && $7 != "nan" {
             name = $1; sub(f, "", name); sub(/\/all$/, "", name);
-            out = (name ~ /^prox\//) ? prox : peer;
+            out = (name ~ /^prox(-solid)?\//) ? prox : peer;
             emax = ($7 < 1e-17) ? 1e-17 : $7;
             printf "\"%s\" %s %s\n", name, $4, emax > out }' "$CSV"
     gnuplot <<GP
