@@ -26,7 +26,9 @@ static inline prox_vec3 prox_axis_across(prox_vec3 d, prox_vec3 w)
 static inline prox_vec3 prox_axis_radial(prox_vec3 d, prox_vec3 w, double *len)
 {
     prox_vec3 p = prox_axis_across(d, w);
-    double n = prox_v3_norm(p), m = fmax(fmax(fabs(d.x), fabs(d.y)), fabs(d.z));
+    /* the largest |d_i| by comparisons: fmax is a library call, and this runs on every support point */
+    double ax = fabs(d.x), ay = fabs(d.y), az = fabs(d.z), m = ax > ay ? ax : ay, n = prox_v3_norm(p);
+    m = m > az ? m : az;
     if (!(n > PROX_TOL_NOISE * m)) {
         *len = 0.0;
         return prox_v3_any_perp(w);

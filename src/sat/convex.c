@@ -697,7 +697,8 @@ static gjk_out gjk_run(cvx *s)
         double f = prox_v3_dot(d, q.w); /* phi(d) = h_P(d): q.w is P's support point at d */
         record(s, d, f);
         separated |= f < 0.0;
-        if (separated && sqrt(vv) + f <= fmax(tol, s->gjk_rel * sqrt(vv))) { verdict = 1; break; }
+        double vn = sqrt(vv), stop = s->gjk_rel * vn; /* (no fmax: a library call each iteration) */
+        if (separated && vn + f <= (stop > tol ? stop : tol)) { verdict = 1; break; }
         int dup = 0;
         for (int i = 0; i < n; ++i) dup |= prox_v3_norm2(prox_v3_sub(q.w, p[i].w)) <= floor2;
         if (dup) break;
