@@ -427,6 +427,31 @@ static void test_contains(void **state)
     }
 }
 
+/* The same at the shell itself: tol a hair above or below the point's distance from the solid, where
+ * the quadratic forms of the REC and ELL sections (the section enlarged by tol inside, scaled by
+ * 1 + tol / least semi-axis outside) must hand over to the closest point; prolate, oblate and flat
+ * sections, points off every side. */
+static void test_contains_shell(void **state)
+{
+    (void)state;
+    test_rng g = test_rng_seed(22);
+    int tested = 0;
+    for (int i = 0; i < 1200; ++i) {
+        int kind = i % 3;
+        body b;
+        lbody lb;
+        rand_body(&g, kind, prox_v3(-2, 5, 1), &b, &lb);
+        prox_vec3 x = rand_point(&g, &lb);
+        if (linside(&lb, lv(x))) continue;
+        ld S = lb.size + lnorm(lsub(lv(x), lb.o)), d = brute_boundary(&lb, lv(x));
+        ld margin = 1e-6L * d > 1e-13L * S ? 1e-6L * d : 1e-13L * S;
+        ++tested;
+        assert_int_equal(b_contains(&b, x, (double)(d + margin)), 1);
+        if (d - margin > 0) assert_int_equal(b_contains(&b, x, (double)(d - margin)), 0);
+    }
+    assert_true(tested > 300);
+}
+
 /* Support point: in the body, d.pc(d) = hc(d) to rounding, and no sampled boundary point beyond. */
 static void test_support(void **state)
 {
@@ -842,7 +867,7 @@ int main(void)
         cmocka_unit_test(test_validators),     cmocka_unit_test(test_special_points),
         cmocka_unit_test(test_support_sets),   cmocka_unit_test(test_trc_boundary),
         cmocka_unit_test(test_rec_boundary),   cmocka_unit_test(test_ell_boundary),
-        cmocka_unit_test(test_contains),       cmocka_unit_test(test_support),
+        cmocka_unit_test(test_contains), cmocka_unit_test(test_contains_shell),       cmocka_unit_test(test_support),
         cmocka_unit_test(test_near_degenerate), cmocka_unit_test(test_extreme_aspect),
         cmocka_unit_test(test_far),            cmocka_unit_test(test_invariance),
         cmocka_unit_test(test_ellipse2),

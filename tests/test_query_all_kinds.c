@@ -244,6 +244,48 @@ static void test_reposition_every_pair(void **state)
         }
 }
 
+/* Two curved bodies (RCC, TRC, REC, ELL in any pair but RCC-RCC) that overlap: the distance query's
+ * common point lies in both solids (the test's long-double membership, 1e-12 S), however it was
+ * found: a centre inside the other body, the midpoint of the two closest points to the other's
+ * centre (query.c's cheap look), or the engine when both miss. Pairs at random offsets (most
+ * centres outside the other body), and pairs moved to overlap by only 1e-10 S along their normal,
+ * where the cheap points rarely lie in both and the engine answers. */
+static void test_curved_overlap_common_point(void **state)
+{
+    (void)state;
+    static const prox_shape_kind kinds[] = {PROX_SHAPE_RCC, PROX_SHAPE_TRC, PROX_SHAPE_REC, PROX_SHAPE_ELL};
+    test_rng g = test_rng_seed(13);
+    int n_ov = 0, n_shallow = 0;
+    for (int ia = 0; ia < 4; ++ia)
+        for (int ib = 0; ib < 4; ++ib) {
+            if (ia == 0 && ib == 0) continue; /* RCC-RCC: the cylinder pair's own solver */
+            for (int t = 0; t < 60; ++t) {
+                prox_shape a, b;
+                random_pair(&g, kinds[ia], kinds[ib], &a, &b);
+                set_ctx(&a, &b, t);
+                prox_signed_result sd = prox_shape_signed_distance(&a, &b);
+                assert_int_equal(sd.status, PROX_OK);
+                if (t % 2 == 1) { /* B moved along the normal to overlap by 1e-10 S */
+                    prox_shape b2;
+                    double S0 = scale_of(&a, &b);
+                    if (prox_shape_translated(&b, prox_v3_scale(sd.normal, -1e-10 * S0 - sd.sd), &b2) != PROX_OK) continue;
+                    b = b2;
+                    ++n_shallow;
+                }
+                double S = scale_of(&a, &b), tol = 1e-12 * S;
+                prox_distance_result d = prox_shape_distance(&a, &b);
+                assert_int_equal(d.status, PROX_OK);
+                if (!d.intersect) continue;
+                ++n_ov;
+                tk_body A = tk_make(&a), B = tk_make(&b);
+                check(d.certified);
+                check(d.distance == 0.0);
+                check(tk_inside(&A, L(d.p1), tol) && tk_inside(&B, L(d.p1), tol));
+            }
+        }
+    check(n_ov > 300 && n_shallow > 200);
+}
+
 int main(void)
 {
     test_init();
@@ -251,7 +293,7 @@ int main(void)
         cmocka_unit_test(test_distance_every_pair),   cmocka_unit_test(test_signed_every_pair),
         cmocka_unit_test(test_verdict_every_pair),    cmocka_unit_test(test_sphere_path_matches_specialised),
         cmocka_unit_test(test_invalid_new_kinds),     cmocka_unit_test(test_reposition_every_pair),
-        cmocka_unit_test(test_support_signed_every_pair),
+        cmocka_unit_test(test_support_signed_every_pair), cmocka_unit_test(test_curved_overlap_common_point),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
