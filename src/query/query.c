@@ -22,6 +22,7 @@
 #include "prox/solid.h"
 #include "prox/support.h"
 #include "sat/convex.h"
+#include "sat/sat_internal.h"
 
 #include <float.h>
 #include <stddef.h>
@@ -421,13 +422,22 @@ static prox_distance_result poly_body_distance(const poly_curved *q)
 }
 
 /* A disjoint pair from the fast path, with its enclosure (core/signed_bounds.c); an overlapping or
- * unsettled one from the engine. */
+ * unsettled one from the depth's strata when the curved body is an RCC (src/sat/poly_rcc_depth.c),
+ * else, or when the strata do not settle it, from the engine. */
 static prox_signed_result poly_body_signed(const poly_curved *q)
 {
     prox_distance_result d;
     int v = poly_body_fast(q, &d);
     const prox_body *ba = q->first ? q->sp : q->body, *bb = q->first ? q->body : q->sp;
-    if (v != PROX_PB_DISJOINT) return convex_signed_bodies(ba, bb);
+    if (v != PROX_PB_DISJOINT) {
+        prox_signed_result e;
+        if (q->body->kind == PROX_BODY_CYL && q->sp->kind == PROX_BODY_POLY && prox_sat_poly_rcc_depth(q->P, q->body, &e)) {
+            if (!q->first) e = mirror_s(e);
+            prox_body_signed_bounds(ba, bb, &e);
+            return e;
+        }
+        return convex_signed_bodies(ba, bb);
+    }
     prox_signed_result r = prox_signed_from_disjoint(&d);
     prox_body_signed_bounds(ba, bb, &r);
     return r;

@@ -1955,6 +1955,17 @@ prox_distance_result prox_convex_distance_ex(const prox_body *a, const prox_body
 
 prox_distance_result prox_convex_distance(const prox_body *a, const prox_body *b) { return prox_convex_distance_ex(a, b, NULL); }
 
+void prox_convex_overlap_witnesses(const prox_body *a, const prox_body *b, prox_vec3 n, double sd, prox_vec3 *p1,
+                                   prox_vec3 *p2)
+{
+    cvx s;
+    prox_vec3 o, x, y;
+    double f;
+    pair_make(a, b, &s, &o, &f);
+    witness_overlap(&s, n, sd * f, &x, &y);
+    *p1 = to_abs(o, f, x), *p2 = to_abs(o, f, y);
+}
+
 prox_distance_result prox_convex_distance_full(const prox_body *a, const prox_body *b, prox_convex_info *info)
 {
     return distance_run(a, b, info, CVX_FULL);

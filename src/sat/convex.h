@@ -42,6 +42,12 @@ prox_distance_result prox_convex_distance(const prox_body *a, const prox_body *b
  * certified with sd_upper = -(the cover's lower bound of the depth) when the cover completed. */
 prox_signed_result prox_convex_signed(const prox_body *a, const prox_body *b);
 
+/* The witnesses of an overlap's depth already known: along the unit n with signed distance sd < 0
+ * (n minimising phi), the pair of the support sets of A along n and B along -n whose difference is
+ * nearest sd n (the sets seen along n meet there), as the engine's own answers take them. */
+void prox_convex_overlap_witnesses(const prox_body *a, const prox_body *b, prox_vec3 n, double sd, prox_vec3 *p1,
+                                   prox_vec3 *p2);
+
 /* The same, with what it certified (info may be NULL). */
 prox_signed_result prox_convex_signed_ex(const prox_body *a, const prox_body *b, prox_convex_info *info);
 prox_distance_result prox_convex_distance_ex(const prox_body *a, const prox_body *b, prox_convex_info *info);
