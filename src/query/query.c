@@ -422,8 +422,8 @@ static prox_distance_result poly_body_distance(const poly_curved *q)
 }
 
 /* A disjoint pair from the fast path, with its enclosure (core/signed_bounds.c); an overlapping or
- * unsettled one from the depth's strata when the curved body is an RCC (src/sat/poly_rcc_depth.c),
- * else, or when the strata do not settle it, from the engine. */
+ * unsettled one from the depth's strata when the curved body is an RCC or an ELL
+ * (src/sat/poly_curved_depth.c), else, or when the strata do not settle it, from the engine. */
 static prox_signed_result poly_body_signed(const poly_curved *q)
 {
     prox_distance_result d;
@@ -431,7 +431,8 @@ static prox_signed_result poly_body_signed(const poly_curved *q)
     const prox_body *ba = q->first ? q->sp : q->body, *bb = q->first ? q->body : q->sp;
     if (v != PROX_PB_DISJOINT) {
         prox_signed_result e;
-        if (q->body->kind == PROX_BODY_CYL && q->sp->kind == PROX_BODY_POLY && prox_sat_poly_rcc_depth(q->P, q->body, &e)) {
+        int strata = q->body->kind == PROX_BODY_CYL || q->body->kind == PROX_BODY_ELL;
+        if (strata && prox_sat_poly_curved_depth(q->P, q->body, &e)) {
             if (!q->first) e = mirror_s(e);
             prox_body_signed_bounds(ba, bb, &e);
             return e;

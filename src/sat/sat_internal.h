@@ -51,14 +51,14 @@ prox_signed_result prox_sat_box_rcc_depth(const prox_box *a, const prox_rcc *b);
  * global search. */
 unsigned long long prox_sat_box_depth_fallbacks(void);
 
-/* Penetration depth of an overlapping polytope (a POLY body: RHP, WED, ARB) and cylinder (a CYL
- * body), any scale and position: the closed-form enumeration of poly_rcc_depth.c on the pair at unit
- * scale relative to the polytope, scaled back. 1 and *res (sd, normal, witnesses; sd_lower and
- * certified of the enumeration) when settled; 0 when the pair is degenerate, touching or disjoint,
- * counted below: the caller runs the global search. */
-int prox_sat_poly_rcc_depth(const prox_body *poly, const prox_body *cyl, prox_signed_result *res);
+/* Penetration depth of an overlapping polytope (a POLY body) and a cylinder or a spheroid (a CYL or
+ * ELL body), any scale and position: the closed-form enumeration of poly_curved_depth.c on the pair
+ * at unit scale relative to the polytope, scaled back. 1 and *res (sd, normal, witnesses; sd_lower
+ * and certified of the enumeration) when settled; 0 when the pair is degenerate, touching or
+ * disjoint, counted below: the caller runs the global search. */
+int prox_sat_poly_curved_depth(const prox_body *poly, const prox_body *curved, prox_signed_result *res);
 
-/* How many pairs since start-up prox_sat_poly_rcc_depth handed back to the global search. */
+/* How many pairs since start-up prox_sat_poly_curved_depth handed back to the global search. */
 unsigned long long prox_sat_poly_depth_fallbacks(void);
 
 /* How many overlapping cylinder pairs since start-up the depth enumeration could not settle and

@@ -52,10 +52,11 @@ int sup_ridge_shadow(const prox_body *lat, const prox_body *oth, prox_vec3 delta
  * when the pose is degenerate or touching and the caller must run the global search. */
 int sup_box_cyl_depth_enum(const prox_body *a, const prox_body *b, prox_signed_result *res);
 
-/* The same for an overlapping convex polytope a (PROX_BODY_POLY: RHP, WED, ARB) and cylinder b
- * (PROX_BODY_CYL), every stratum in closed form (poly_rcc_depth.c): *res gets sd, normal, sd_lower
- * and certified, not the witnesses (prox_sat_poly_rcc_depth adds them). */
-int sup_poly_cyl_depth_enum(const prox_body *a, const prox_body *b, prox_signed_result *res);
+/* The same for an overlapping convex polytope a (PROX_BODY_POLY: BOX, RPP, RHP, WED, ARB) and a
+ * cylinder or a spheroid b (PROX_BODY_CYL, PROX_BODY_ELL), every stratum in closed form
+ * (poly_curved_depth.c): *res gets sd, normal, sd_lower and certified, not the witnesses
+ * (prox_sat_poly_curved_depth adds them). */
+int sup_poly_curved_depth_enum(const prox_body *a, const prox_body *b, prox_signed_result *res);
 
 /* Penetration depth of two overlapping cylinders (both PROX_BODY_CYL) by enumerating the stationary
  * directions of each stratum (docs/algorithms/sat.md, "fast depth"); 1 and *res filled when every
