@@ -4,6 +4,7 @@
 #include "core/body.h"
 
 #include <stddef.h>
+#include <string.h>
 
 #include "prox/support.h"
 
@@ -215,26 +216,39 @@ double prox_body_boundary(const prox_body *b, prox_vec3 x, prox_vec3 *q)
     return s;
 }
 
-prox_body prox_body_scaled(const prox_body *b, double f)
+void prox_body_scaled_at(prox_body *s, const prox_body *b, prox_vec3 c, double f)
 {
-    prox_body s = *b;
-    s.c = prox_v3_scale(b->c, f);
-    s.cyl = prox_cyl_scaled(&b->cyl, f);
-    for (int k = 0; k < 3; ++k) s.box.h[k] *= f;
-    s.r *= f;
+    memcpy(s, b, offsetof(prox_body, x)); /* the common part, then the union's member of b's kind alone */
     switch (b->kind) {
-    case PROX_BODY_POLY:
-        for (int i = 0; i < b->x.poly.nv; ++i) s.x.poly.v[i] = prox_v3_scale(b->x.poly.v[i], f);
-        for (int i = 0; i < b->x.poly.nf; ++i) s.x.poly.d[i] *= f;
-        s.x.poly.size *= f;
-        s.x.poly.lo = prox_v3_scale(b->x.poly.lo, f), s.x.poly.hi = prox_v3_scale(b->x.poly.hi, f); /* f > 0 */
-        break;
-    case PROX_BODY_CONE: s.x.cone.hh *= f, s.x.cone.r1 *= f, s.x.cone.r2 *= f; break;
-    case PROX_BODY_ECYL: s.x.ecyl.hh *= f, s.x.ecyl.a1 *= f, s.x.ecyl.a2 *= f; break;
-    case PROX_BODY_ELL: s.x.ell.a *= f, s.x.ell.b *= f; break;
+    case PROX_BODY_POLY: s->x.poly = b->x.poly; break;
+    case PROX_BODY_CONE: s->x.cone = b->x.cone; break;
+    case PROX_BODY_ECYL: s->x.ecyl = b->x.ecyl; break;
+    case PROX_BODY_ELL: s->x.ell = b->x.ell; break;
     default: break;
     }
-    s.size *= f;
+    s->c = prox_v3_scale(c, f);
+    s->cyl = prox_cyl_scaled(&b->cyl, f);
+    for (int k = 0; k < 3; ++k) s->box.h[k] *= f;
+    s->r *= f;
+    switch (b->kind) {
+    case PROX_BODY_POLY:
+        for (int i = 0; i < b->x.poly.nv; ++i) s->x.poly.v[i] = prox_v3_scale(b->x.poly.v[i], f);
+        for (int i = 0; i < b->x.poly.nf; ++i) s->x.poly.d[i] *= f;
+        s->x.poly.size *= f;
+        s->x.poly.lo = prox_v3_scale(b->x.poly.lo, f), s->x.poly.hi = prox_v3_scale(b->x.poly.hi, f); /* f > 0 */
+        break;
+    case PROX_BODY_CONE: s->x.cone.hh *= f, s->x.cone.r1 *= f, s->x.cone.r2 *= f; break;
+    case PROX_BODY_ECYL: s->x.ecyl.hh *= f, s->x.ecyl.a1 *= f, s->x.ecyl.a2 *= f; break;
+    case PROX_BODY_ELL: s->x.ell.a *= f, s->x.ell.b *= f; break;
+    default: break;
+    }
+    s->size *= f;
+}
+
+prox_body prox_body_scaled(const prox_body *b, double f)
+{
+    prox_body s;
+    prox_body_scaled_at(&s, b, b->c, f);
     return s;
 }
 

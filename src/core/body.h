@@ -109,6 +109,10 @@ static inline prox_cyl prox_cyl_scaled(const prox_cyl *k, double f)
  * or product of its coordinates and sizes can overflow or underflow. */
 prox_body prox_body_scaled(const prox_body *b, double f);
 
+/* *s = b with centre c, scaled by f about the origin, written in place: the common part and the
+ * union's member of b's kind alone are copied (a polytope's 800 bytes only for a polytope). */
+void prox_body_scaled_at(prox_body *s, const prox_body *b, prox_vec3 c, double f);
+
 /* The power of two nearest below 1/S: scaling a pair of scale S by it brings S into [1, 2). */
 double prox_unit_scale(double S);
 

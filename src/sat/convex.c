@@ -1602,14 +1602,12 @@ static void depth_cover(cvx *s, prox_convex_info *info)
  * their distance to the origin) and at unit scale (a power of two: exact); *o, *f receive both. */
 static void pair_make(const prox_body *a, const prox_body *b, cvx *s, prox_vec3 *o, double *f)
 {
-    prox_body ra = *a, rb = *b;
     *o = a->c;
-    ra.c = prox_v3(0, 0, 0);
-    rb.c = prox_v3_sub(b->c, a->c);
-    double S = fmax(prox_v3_norm(rb.c), fmax(a->size, b->size));
+    prox_vec3 cb = prox_v3_sub(b->c, a->c);
+    double S = fmax(prox_v3_norm(cb), fmax(a->size, b->size));
     *f = prox_unit_scale(S);
-    s->a = prox_body_scaled(&ra, *f);
-    s->b = prox_body_scaled(&rb, *f);
+    prox_body_scaled_at(&s->a, a, prox_v3(0, 0, 0), *f); /* A at the origin, B relative to it */
+    prox_body_scaled_at(&s->b, b, cb, *f);
     s->delta = prox_v3_sub(s->b.c, s->a.c);
     s->S = S * *f;
     s->gjk_rel = 0.0;

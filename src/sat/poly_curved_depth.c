@@ -291,9 +291,9 @@ int prox_sat_poly_curved_depth(const prox_body *poly, const prox_body *curved, p
 {
     prox_vec3 o = poly->c;
     double S = fmax(prox_v3_dist(poly->c, curved->c), fmax(poly->size, curved->size)), f = prox_unit_scale(S);
-    prox_body a = *poly, b = *curved;
-    a.c = prox_v3(0, 0, 0), b.c = prox_v3_sub(curved->c, o);
-    a = prox_body_scaled(&a, f), b = prox_body_scaled(&b, f);
+    prox_body a, b;
+    prox_body_scaled_at(&a, poly, prox_v3(0, 0, 0), f);
+    prox_body_scaled_at(&b, curved, prox_v3_sub(curved->c, o), f);
     prox_signed_result r = {0};
     if (!sup_poly_curved_depth_enum(&a, &b, &r)) {
         atomic_fetch_add_explicit(&g_poly_depth_fallbacks, 1, memory_order_relaxed);
