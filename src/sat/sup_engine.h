@@ -29,7 +29,8 @@ prox_vec3 sup_consistent_normal(prox_vec3 n, double sd, prox_vec3 p1, prox_vec3 
  * right to ~1e-8 rad, the support points then move by r x 1e-8), each with its witnesses
  * (sup_witnesses) and normal (sup_consistent_normal); the candidate whose p2 - p1 agrees best with
  * sd normal is kept, among those whose phi is within PROX_TOL_SNAP x scale of phi(n0). Fills sd,
- * normal, p1, p2 of *res. */
+ * normal, p1, p2 of *res. For RCC, BOX and SPH bodies only: this engine's support sets read any other
+ * kind as a box (the added kinds' witnesses: prox_convex_overlap_witnesses, sat/convex.h). */
 void sup_overlap_answer(const prox_body *a, const prox_body *b, prox_vec3 n0, prox_signed_result *res);
 
 /* The normals (in the plane of the unit axes e1, e2; not unit) at the feet of the perpendiculars
