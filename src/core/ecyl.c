@@ -65,11 +65,8 @@ int prox_ecyl_contains(const prox_ecyl *k, prox_vec3 y, double tol)
     double dt = fabs(l[0]) - k->hh;
     if (dt > tol) return 0;
     if (prox_ellipse2_inside(k->a1, k->a2, l[1], l[2])) return 1;
-    /* the section's quadratic forms first, as prox_ellb_contains: the ellipse with semi-axes a1 + tol,
-     * a2 + tol lies within tol of the section, and every point within tol in (1 + tol / a2) times it */
-    if (dt <= 0.0 && prox_ellipse2_inside(k->a1 + tol, k->a2 + tol, l[1], l[2])) return 1;
-    double z1 = l[1] / k->a1, z2 = l[2] / k->a2, g = 1.0 + tol / (k->a1 < k->a2 ? k->a1 : k->a2);
-    if (z1 * z1 + z2 * z2 > g * g) return 0;
+    int w = prox_ellipse2_within(k->a1, k->a2, l[1], l[2], tol); /* the section's quadratic forms */
+    if (w == 0 || (w == 1 && dt <= 0.0)) return w; /* within tol across and inside along the axis */
     double dr = prox_ellipse2_closest(k->a1, k->a2, l[1], l[2], &q1, &q2);
     return prox_hypot2(fmax(dt, 0.0), dr) <= tol;
 }

@@ -47,13 +47,8 @@ int prox_ellb_contains(const prox_ellb *k, prox_vec3 y, double tol)
     double rho, q0, q1;
     prox_vec3 u;
     double t = half_plane(k, y, &rho, &u);
-    /* The meridian ellipse E with semi-axes a + tol, b + tol lies in E + B(tol): its support function
-     * |((a + tol) d0, (b + tol) d1)| is at most |(a d0, b d1)| + tol |d| (Minkowski's inequality).
-     * E + B(tol) lies in (1 + tol / min(a, b)) E, since B(tol) lies in tol / min(a, b) E. So the two
-     * quadratic forms decide every point but those of a thin shell, where the closest point does. */
-    if (prox_ellipse2_inside(k->a + tol, k->b + tol, t, rho)) return 1;
-    double z0 = t / k->a, z1 = rho / k->b, g = 1.0 + tol / (k->a < k->b ? k->a : k->b);
-    if (z0 * z0 + z1 * z1 > g * g) return 0;
+    int w = prox_ellipse2_within(k->a, k->b, t, rho, tol); /* the meridian section's quadratic forms */
+    if (w >= 0) return w;
     return prox_ellipse2_closest(k->a, k->b, t, rho, &q0, &q1) <= tol;
 }
 

@@ -24,6 +24,13 @@ int prox_ellipse2_inside(double e0, double e1, double y0, double y1)
     return z0 * z0 + z1 * z1 <= 1.0;
 }
 
+int prox_ellipse2_within(double e0, double e1, double y0, double y1, double tol)
+{
+    if (prox_ellipse2_inside(e0 + tol, e1 + tol, y0, y1)) return 1;
+    double z0 = y0 / e0, z1 = y1 / e1, g = 1.0 + tol / (e0 < e1 ? e0 : e1);
+    return z0 * z0 + z1 * z1 > g * g ? 0 : -1;
+}
+
 /* F(w) and F'(w) of the secular equation. */
 static double secular(double n, double z, double d, double w, double *df)
 {

@@ -15,4 +15,11 @@ double prox_ellipse2_closest(double e0, double e1, double y0, double y1, double 
 /* 1 when (y0, y1) lies in the closed solid ellipse: (y0/e0)^2 + (y1/e1)^2 <= 1. */
 int prox_ellipse2_inside(double e0, double e1, double y0, double y1);
 
+/* Whether (y0, y1) lies within tol >= 0 of the solid ellipse, by its quadratic forms alone: 1 when
+ * inside the ellipse of semi-axes e0 + tol, e1 + tol, which lies in E + B(tol) (its support function
+ * |((e0 + tol) d0, (e1 + tol) d1)| is at most |(e0 d0, e1 d1)| + tol |d|, Minkowski's inequality);
+ * 0 when outside (1 + tol / min(e0, e1)) E, which holds E + B(tol) (B(tol) lies in tol / min E);
+ * -1 in the thin shell between, where the closest point decides. */
+int prox_ellipse2_within(double e0, double e1, double y0, double y1, double tol);
+
 #endif

@@ -26,6 +26,34 @@ static inline prox_v2 prox_v2_seg_closest(prox_v2 a, prox_v2 b, prox_v2 q)
     return prox_v2_mad(a, t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t), e);
 }
 
+/* Convex hull of p[0..n-1] (n <= PROX_V2_HULL_MAX) by Andrew's monotone chain: its corners'
+ * indices into h (room for 2 n + 2), counter-clockwise, collinear points dropped; returns how many
+ * (0 for n = 0; a segment or a point when the points are collinear). */
+#define PROX_V2_HULL_MAX 32
+static inline int prox_v2_hull(const prox_v2 *p, int n, int *h)
+{
+    int ord[PROX_V2_HULL_MAX];
+    for (int i = 0; i < n; ++i) ord[i] = i;
+    for (int i = 1; i < n; ++i) /* insertion sort by (x, y) */
+        for (int j = i; j > 0 && (p[ord[j]].x < p[ord[j - 1]].x ||
+                                  (p[ord[j]].x == p[ord[j - 1]].x && p[ord[j]].y < p[ord[j - 1]].y)); --j) {
+            int t = ord[j];
+            ord[j] = ord[j - 1], ord[j - 1] = t;
+        }
+    int m = 0;
+    for (int pass = 0; pass < 2; ++pass) {
+        int start = m;
+        for (int ii = 0; ii < n; ++ii) {
+            int i = pass == 0 ? ord[ii] : ord[n - 1 - ii];
+            while (m >= start + 2 && prox_v2_cross(prox_v2_sub(p[h[m - 1]], p[h[m - 2]]), prox_v2_sub(p[i], p[h[m - 2]])) <= 0.0) --m;
+            h[m++] = i;
+        }
+        --m; /* the last point starts the other chain */
+    }
+    if (m < 1 && n > 0) m = 1, h[0] = ord[0];
+    return m < 0 ? 0 : m;
+}
+
 /* Closest point to q of the convex polygon v[0..nv-1] in cyclic order, either orientation (a point
  * for nv = 1, a segment for nv = 2); q itself when inside. */
 static inline prox_v2 prox_v2_poly_closest(const prox_v2 *v, int nv, prox_v2 q)

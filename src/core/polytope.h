@@ -53,14 +53,19 @@ prox_vec3 prox_polytope_pc(const prox_polytope *p, prox_vec3 d);
  * and within tol of the corners' bounding box. */
 int prox_polytope_contains(const prox_polytope *p, prox_vec3 y, double tol);
 
-/* Closest point of the segment [a, b] to y. */
-static inline prox_vec3 prox_seg_closest(prox_vec3 a, prox_vec3 b, prox_vec3 y)
+/* The parameter t in [0, 1] of the closest point a + t (b - a) of the segment [a, b] to y. */
+static inline double prox_seg_param(prox_vec3 a, prox_vec3 b, prox_vec3 y)
 {
     prox_vec3 ab = prox_v3_sub(b, a);
     double l2 = prox_v3_norm2(ab);
     double t = l2 > 0.0 ? prox_v3_dot(prox_v3_sub(y, a), ab) / l2 : 0.0;
-    t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
-    return prox_v3_mad(a, t, ab);
+    return t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+}
+
+/* Closest point of the segment [a, b] to y. */
+static inline prox_vec3 prox_seg_closest(prox_vec3 a, prox_vec3 b, prox_vec3 y)
+{
+    return prox_v3_mad(a, prox_seg_param(a, b, y), prox_v3_sub(b, a));
 }
 
 /* Closest point of the solid to y (y itself inside), relative to c. */

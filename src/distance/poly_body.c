@@ -84,10 +84,9 @@ static double pb_face(const prox_polytope *p, const prox_body *b, int f, prox_ve
     int m = p->fnv[f], ord[PROX_POLY_MAXFV];
     double lb[PROX_POLY_MAXFV], t0[PROX_POLY_MAXFV]; /* t0: the edge's point nearest B's lowest, the root's start */
     for (int k = 0; k < m; ++k) {
-        prox_vec3 a = p->v[p->fv[f][k]], c = p->v[p->fv[f][k + 1 < m ? k + 1 : 0]], e = prox_v3_sub(c, a);
-        double l2 = prox_v3_norm2(e), t = l2 > 0.0 ? prox_v3_dot(prox_v3_sub(low, a), e) / l2 : 0.0;
-        t0[k] = t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
-        prox_vec3 w = prox_v3_sub(low, prox_v3_mad(a, t, e));
+        prox_vec3 a = p->v[p->fv[f][k]], c = p->v[p->fv[f][k + 1 < m ? k + 1 : 0]];
+        t0[k] = prox_seg_param(a, c, low);
+        prox_vec3 w = prox_v3_sub(low, prox_v3_mad(a, t0[k], prox_v3_sub(c, a)));
         double len = prox_v3_norm(w);
         lb[k] = -INFINITY;
         if (len > 0.0) {

@@ -881,29 +881,10 @@ static v2 to2(const frame2 *F, prox_vec3 x)
     return r;
 }
 
-static int v2_less(v2 a, v2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
-
-/* Convex hull of the projected points (Andrew's monotone chain), collinear points dropped. */
+/* Convex hull of the projected points (core/plane2.h), collinear points dropped. */
 static void hull2(const v2 *p, int n, set2 *s)
 {
-    int ord[PROX_POLY_MAXV];
-    for (int i = 0; i < n; ++i) ord[i] = i;
-    for (int i = 1; i < n; ++i) /* insertion sort by (x, y) */
-        for (int j = i; j > 0 && v2_less(p[ord[j]], p[ord[j - 1]]); --j) {
-            int t = ord[j];
-            ord[j] = ord[j - 1], ord[j - 1] = t;
-        }
-    int h[2 * PROX_POLY_MAXV + 2], m = 0;
-    for (int pass = 0; pass < 2; ++pass) {
-        int start = m;
-        for (int ii = 0; ii < n; ++ii) {
-            int i = pass == 0 ? ord[ii] : ord[n - 1 - ii];
-            while (m >= start + 2 && prox_v2_cross(prox_v2_sub(p[h[m - 1]], p[h[m - 2]]), prox_v2_sub(p[i], p[h[m - 2]])) <= 0.0) --m;
-            h[m++] = i;
-        }
-        --m; /* the last point starts the other chain */
-    }
-    if (m < 1) m = 1, h[0] = ord[0];
+    int h[2 * PROX_POLY_MAXV + 2], m = prox_v2_hull(p, n, h);
     if (m == 2 && prox_v2_norm(prox_v2_sub(p[h[0]], p[h[1]])) == 0.0) m = 1;
     s->nv = m;
     for (int i = 0; i < m; ++i) s->v[i] = p[h[i]], s->idx[i] = h[i];

@@ -40,6 +40,7 @@
 
 #include "convex.h"
 #include "core/axis.h"
+#include "core/plane2.h"
 #include "core/tol.h"
 #include "prox/support.h"
 #include "sat_internal.h"
@@ -131,32 +132,6 @@ static int pd_vertices_ell(pd_state *s, double tol)
     return 1;
 }
 
-/* The shadow's hull: the corners of G + [-d, d] in counter-clockwise order (Andrew's monotone
- * chain), collinear points dropped. Returns how many (0 .. n). */
-static int pd_hull(double (*q)[2], int n, int *h)
-{
-    for (int i = 1; i < n; ++i) /* sort by x, then y (insertion: n <= 2 PROX_POLY_MAXV) */
-        for (int j = i; j > 0 && (q[j][0] < q[j - 1][0] || (q[j][0] == q[j - 1][0] && q[j][1] < q[j - 1][1])); --j) {
-            double t0 = q[j][0], t1 = q[j][1];
-            q[j][0] = q[j - 1][0], q[j][1] = q[j - 1][1], q[j - 1][0] = t0, q[j - 1][1] = t1;
-        }
-    int m = 0;
-    for (int pass = 0; pass < 2; ++pass) {
-        int base = m;
-        for (int k = 0; k < n; ++k) {
-            int i = pass ? n - 1 - k : k;
-            while (m >= base + 2) {
-                const double *a = q[h[m - 2]], *b = q[h[m - 1]];
-                if ((b[0] - a[0]) * (q[i][1] - a[1]) - (b[1] - a[1]) * (q[i][0] - a[0]) > 0.0) break;
-                --m;
-            }
-            h[m++] = i;
-        }
-        --m; /* the chain's last point starts the other */
-    }
-    return m;
-}
-
 /* The arc of unit directions from a to b (counter-clockwise, less than a half turn) holds D, to
  * slack: a sign within rounding counts as inside (the bound only weakens). */
 static int pd_in_arc(const double a[2], const double b[2], double d0, double d1)
@@ -214,25 +189,25 @@ static int pd_ridge(pd_state *s, prox_vec3 e, double tol)
     double s0, s1, d2;
     if (!pd_shadow(s, e, &e1, &e2, &s0, &s1, &d2)) return 0;
     double q1 = prox_v3_dot(s->delta, e1), q2 = prox_v3_dot(s->delta, e2);
-    double pts[2 * PROX_POLY_MAXV][2];
+    prox_v2 pts[2 * PROX_POLY_MAXV]; /* the corners' shadows moved by -+d: the hull's candidates */
     int n = 0, h[4 * PROX_POLY_MAXV + 2];
     for (int i = 0; i < s->p->nv; ++i) {
         double g1 = prox_v3_dot(s->p->v[i], e1), g2 = prox_v3_dot(s->p->v[i], e2);
-        pts[n][0] = g1, pts[n++][1] = g2 - d2;
-        if (d2 != 0.0) pts[n][0] = g1, pts[n++][1] = g2 + d2;
+        pts[n++] = (prox_v2){g1, g2 - d2};
+        if (d2 != 0.0) pts[n++] = (prox_v2){g1, g2 + d2};
     }
-    int m = pd_hull(pts, n, h);
+    int m = prox_v2_hull(pts, n, h);
     if (m < 3) return 0; /* a flat shadow: the global search */
     double lb[2 * PROX_POLY_MAXV], nrm[2 * PROX_POLY_MAXV + 1][2];
     int ord[2 * PROX_POLY_MAXV];
     for (int k = 0; k < m; ++k) { /* the outward unit normal of the hull's edge k -> k + 1 */
-        const double *a = pts[h[k]], *b = pts[h[k + 1 < m ? k + 1 : 0]];
-        double t0 = b[1] - a[1], t1 = a[0] - b[0], tn = sqrt(t0 * t0 + t1 * t1);
+        prox_v2 a = pts[h[k]], b = pts[h[k + 1 < m ? k + 1 : 0]];
+        double t0 = b.y - a.y, t1 = a.x - b.x, tn = sqrt(t0 * t0 + t1 * t1);
         nrm[k][0] = t0 / tn, nrm[k][1] = t1 / tn;
     }
     for (int k = 0; k < m; ++k) { /* corner k's arc: from the normal of edge k - 1 to that of edge k */
-        const double *g = pts[h[k]], *a = nrm[k ? k - 1 : m - 1], *b = nrm[k];
-        lb[k] = pd_arc_lb(a, b, s0, s1, q1 - g[0], q2 - g[1]);
+        const double *a = nrm[k ? k - 1 : m - 1], *b = nrm[k];
+        lb[k] = pd_arc_lb(a, b, s0, s1, q1 - pts[h[k]].x, q2 - pts[h[k]].y);
         int at = k;
         for (; at > 0 && lb[ord[at - 1]] > lb[k]; --at) ord[at] = ord[at - 1];
         ord[at] = k;
@@ -240,8 +215,7 @@ static int pd_ridge(pd_state *s, prox_vec3 e, double tol)
     for (int v = 0; v < m; ++v) {
         int k = ord[v];
         if (lb[k] >= s->best - tol) break;
-        const double *g = pts[h[k]];
-        if (!pd_feet(s, s0, s1, q1 - g[0], q2 - g[1], e1, e2, &e)) return 0; /* outward normals of E */
+        if (!pd_feet(s, s0, s1, q1 - pts[h[k]].x, q2 - pts[h[k]].y, e1, e2, &e)) return 0; /* outward normals of E */
     }
     return 1;
 }
