@@ -35,6 +35,7 @@
 
 #include "epa.h"
 #include "core/axis.h"
+#include "core/edge_root.h"
 #include "core/pl_disk.h"
 #include "core/plane2.h"
 #include "core/tol.h"
@@ -110,65 +111,82 @@ static prox_vec3 phi_grad(const cvx *s, prox_vec3 d)
     return prox_v3_sub(prox_v3_sub(prox_body_pc(&s->a, d), prox_body_pc(&s->b, prox_v3_neg(d))), s->delta);
 }
 
-/* (M v - (Md)(Md.v) / q^2) / q with q^2 = d.Md: the Hessian of sqrt(d^T M d) applied to v. */
-static prox_vec3 sqrt_form_hess(prox_vec3 md, prox_vec3 mv, double q, prox_vec3 v)
+/* The Hessian of a body's hc at d as a bilinear form on two tangent vectors t1, t2 of the sphere at
+ * d: h[0] += t1.H t1, h[1] += t1.H t2, h[2] += t2.H t2 (newton_step's 2 x 2 system, one call a body
+ * instead of one Hessian-vector product per tangent vector). */
+
+/* sqrt(d^T M d): H = (M - (Md)(Md)^T / q^2) / q with q^2 = d.Md, from t1.M t2 (m12 and the diagonal
+ * m11, m22) and md.t1, md.t2. */
+static void sqrt_form(double q, double m11, double m12, double m22, double e1, double e2, double h[3])
 {
-    if (!(q > 0.0)) return prox_v3(0, 0, 0);
-    return prox_v3_scale(prox_v3_mad(mv, -prox_v3_dot(md, v) / (q * q), md), 1.0 / q);
+    if (!(q > 0.0)) return;
+    double iq = 1.0 / q, iq2 = iq * iq;
+    h[0] += (m11 - e1 * e1 * iq2) * iq, h[1] += (m12 - e1 * e2 * iq2) * iq, h[2] += (m22 - e2 * e2 * iq2) * iq;
 }
 
-/* Hessian of r |P d| (P the projection across the unit axis w) applied to v: r/|Pd| (P - p p^T) v.
- * A radius below PROX_TOL_NOISE of the unit-scale pair adds less than rounding to phi, and near the
- * axis r / |Pd| would swamp the other body's curvature (a needle's end against a flat ellipsoid:
- * 4e212, and the Newton polish of the normal could not move): it is left out. */
-static prox_vec3 lateral_hess(prox_vec3 w, double r, prox_vec3 d, prox_vec3 v)
+/* r |P d| (P the projection across the unit axis w): H = r/|Pd| (P - p p^T), p = Pd / |Pd|, the
+ * projection across w and p; each tangent vector projected once. A radius below PROX_TOL_NOISE of the
+ * unit-scale pair adds less than rounding to phi, and near the axis r / |Pd| would swamp the other
+ * body's curvature (a needle's end against a flat ellipsoid: 4e212, and the Newton polish of the
+ * normal could not move): it is left out. */
+static void lateral_form(prox_vec3 w, double r, prox_vec3 d, prox_vec3 t1, prox_vec3 t2, double h[3])
 {
     prox_vec3 perp = prox_v3_reject(d, w);
     double n = prox_v3_norm(perp);
-    if (!(n > 0.0) || !(r > PROX_TOL_NOISE)) return prox_v3(0, 0, 0);
+    if (!(n > 0.0) || !(r > PROX_TOL_NOISE)) return;
     prox_vec3 p = prox_v3_scale(perp, 1.0 / n);
-    prox_vec3 x = prox_v3_reject(prox_v3_reject(v, w), p);
-    return prox_v3_scale(x, r / n);
+    prox_vec3 x1 = prox_v3_reject(prox_v3_reject(t1, w), p), x2 = prox_v3_reject(prox_v3_reject(t2, w), p);
+    double k = r / n;
+    h[0] += k * prox_v3_norm2(x1), h[1] += k * prox_v3_dot(x1, x2), h[2] += k * prox_v3_norm2(x2);
 }
 
-/* Hessian of hc at d applied to v, where hc is smooth (zero for the polytopes). */
-static prox_vec3 hc_hess(const prox_body *b, prox_vec3 d, prox_vec3 v)
+/* The form of hc's Hessian at d, where hc is smooth (zero for the polytopes). */
+static void hc_form(const prox_body *b, prox_vec3 d, prox_vec3 t1, prox_vec3 t2, double h[3])
 {
     switch (b->kind) {
-    case PROX_BODY_SPH: {
+    case PROX_BODY_SPH: { /* r |d|: H = r / |d| (I - d d^T / |d|^2) */
         double n = prox_v3_norm(d);
-        return prox_v3_scale(prox_v3_reject(v, prox_v3_scale(d, 1.0 / n)), b->r / n);
+        prox_vec3 u = prox_v3_scale(d, 1.0 / n), x1 = prox_v3_reject(t1, u), x2 = prox_v3_reject(t2, u);
+        double k = b->r / n;
+        h[0] += k * prox_v3_norm2(x1), h[1] += k * prox_v3_dot(x1, x2), h[2] += k * prox_v3_norm2(x2);
+        return;
     }
-    case PROX_BODY_CYL: return lateral_hess(b->cyl.w, b->cyl.r, d, v);
+    case PROX_BODY_CYL: lateral_form(b->cyl.w, b->cyl.r, d, t1, t2, h); return;
     case PROX_BODY_CONE: {
         const prox_cone *k = &b->x.cone;
         double t = prox_v3_dot(d, k->w), p = prox_v3_norm(prox_v3_reject(d, k->w));
         double top = k->hh * t + k->r2 * p, base = -k->hh * t + k->r1 * p;
-        return lateral_hess(k->w, top >= base ? k->r2 : k->r1, d, v);
+        lateral_form(k->w, top >= base ? k->r2 : k->r1, d, t1, t2, h);
+        return;
     }
-    case PROX_BODY_ECYL: {
+    case PROX_BODY_ECYL: { /* M = a1^2 u1 u1^T + a2^2 u2 u2^T */
         const prox_ecyl *k = &b->x.ecyl;
-        double s1 = k->a1 * k->a1, s2 = k->a2 * k->a2;
-        prox_vec3 md = prox_v3_add(prox_v3_scale(k->u1, s1 * prox_v3_dot(d, k->u1)), prox_v3_scale(k->u2, s2 * prox_v3_dot(d, k->u2)));
-        prox_vec3 mv = prox_v3_add(prox_v3_scale(k->u1, s1 * prox_v3_dot(v, k->u1)), prox_v3_scale(k->u2, s2 * prox_v3_dot(v, k->u2)));
-        return sqrt_form_hess(md, mv, sqrt(prox_v3_dot(d, md)), v);
+        double s1 = k->a1 * k->a1, s2 = k->a2 * k->a2, d1 = prox_v3_dot(d, k->u1), d2 = prox_v3_dot(d, k->u2);
+        double p1 = prox_v3_dot(t1, k->u1), p2 = prox_v3_dot(t2, k->u1), q1 = prox_v3_dot(t1, k->u2), q2 = prox_v3_dot(t2, k->u2);
+        sqrt_form(sqrt(s1 * d1 * d1 + s2 * d2 * d2), s1 * p1 * p1 + s2 * q1 * q1, s1 * p1 * p2 + s2 * q1 * q2,
+                  s1 * p2 * p2 + s2 * q2 * q2, s1 * d1 * p1 + s2 * d2 * q1, s1 * d1 * p2 + s2 * d2 * q2, h);
+        return;
     }
     case PROX_BODY_ELL: { /* M = a^2 w w^T + b^2 (I - w w^T), applied by parts: as b^2 I + (a^2 - b^2) w w^T
                            * it loses a^2 below eps b^2 (a flat ellipsoid at its pole: d.Md of 0) */
         const prox_ellb *k = &b->x.ell;
-        double a2 = k->a * k->a, b2 = k->b * k->b, dw = prox_v3_dot(d, k->w);
-        prox_vec3 dp = prox_v3_reject(d, k->w);
-        prox_vec3 md = prox_v3_mad(prox_v3_scale(dp, b2), a2 * dw, k->w);
-        prox_vec3 mv = prox_v3_mad(prox_v3_scale(prox_v3_reject(v, k->w), b2), a2 * prox_v3_dot(v, k->w), k->w);
-        return sqrt_form_hess(md, mv, prox_hypot2(k->a * dw, k->b * prox_v3_norm(dp)), v);
+        double a2 = k->a * k->a, b2 = k->b * k->b, dw = prox_v3_dot(d, k->w), w1 = prox_v3_dot(t1, k->w), w2 = prox_v3_dot(t2, k->w);
+        prox_vec3 dp = prox_v3_reject(d, k->w), x1 = prox_v3_reject(t1, k->w), x2 = prox_v3_reject(t2, k->w);
+        sqrt_form(prox_hypot2(k->a * dw, k->b * prox_v3_norm(dp)), b2 * prox_v3_norm2(x1) + a2 * w1 * w1,
+                  b2 * prox_v3_dot(x1, x2) + a2 * w1 * w2, b2 * prox_v3_norm2(x2) + a2 * w2 * w2,
+                  b2 * prox_v3_dot(dp, x1) + a2 * dw * w1, b2 * prox_v3_dot(dp, x2) + a2 * dw * w2, h);
+        return;
     }
-    default: return prox_v3(0, 0, 0);
+    default: return;
     }
 }
 
-static prox_vec3 phi_hess(const cvx *s, prox_vec3 d, prox_vec3 v)
+/* The tangent Hessian form of phi at d: A's hc at d and B's at -d (two sign changes cancel). */
+static void phi_form(const cvx *s, prox_vec3 d, prox_vec3 t1, prox_vec3 t2, double h[3])
 {
-    return prox_v3_add(hc_hess(&s->a, d, v), hc_hess(&s->b, prox_v3_neg(d), v));
+    h[0] = h[1] = h[2] = 0.0;
+    hc_form(&s->a, d, t1, t2, h);
+    hc_form(&s->b, prox_v3_neg(d), t1, t2, h);
 }
 
 /* Keeps d (unit) with its value: the best, and the list of distinct good starts. */
@@ -319,29 +337,40 @@ static double circ_step(cvx *s, const cvx_circ *C, double th, prox_vec3 d, doubl
     return prox_v3_dot(g, t);
 }
 
-/* Minimum of phi along the circle in [lo, hi]: the root of the slope by secant steps, every third a
- * bisection (a kink of another body on the circle makes the slope jump: bisection reaches it), to a
- * bracket of PROX_TOL_ANGLE; exact: then regula falsi with the Illinois halving moves both ends to
- * the rounding of the angle (an answer's witnesses: a needle's support point moves 2e9 S per rad).
- * Every point is recorded; returns the root (the lower endpoint when the slope does not change sign). */
+/* The slope at th for the root search (prox_illinois), each point recorded and the lowest kept. */
+typedef struct circ_walk {
+    cvx *s;
+    const cvx_circ *C;
+    prox_vec3 bd, last;
+    double bf;
+} circ_walk;
+
+static double circ_walk_slope(void *ctx, double th)
+{
+    circ_walk *w = ctx;
+    double f;
+    w->last = circ_at(w->C, th);
+    double g = circ_step(w->s, w->C, th, w->last, &f);
+    if (f <= w->bf) w->bf = f, w->bd = w->last;
+    return g;
+}
+
+/* Minimum of phi along the circle in [lo, hi]: the root of the slope by regula falsi with the
+ * Illinois modification (core/edge_root.h; where a kink of another body on the circle makes the slope
+ * jump, its steps are bisections), to a bracket of PROX_TOL_ANGLE; exact: then regula falsi with the
+ * Illinois halving moves both ends to the rounding of the angle (an answer's witnesses: a needle's
+ * support point moves 2e9 S per rad). Every point is recorded; returns the root (the lower endpoint
+ * when the slope does not change sign). */
 static prox_vec3 circ_min_to(cvx *s, const cvx_circ *C, double lo, double hi, int exact)
 {
     prox_vec3 dl = circ_at(C, lo), dh = circ_at(C, hi), bd = dl;
     double fl, fh, gl = circ_step(s, C, lo, dl, &fl), gh = circ_step(s, C, hi, dh, &fh), bf = fl;
     if (fh < bf) bf = fh, bd = dh;
     if (!(gl < 0.0 && gh > 0.0)) return bd;
-    int it = 0;
-    for (; it < 100 && hi - lo > PROX_TOL_ANGLE; ++it) {
-        double th = lo - gl * (hi - lo) / (gh - gl);
-        if (!(th > lo && th < hi) || it % 3 == 2) th = 0.5 * (lo + hi);
-        prox_vec3 d = circ_at(C, th);
-        double f, g = circ_step(s, C, th, d, &f);
-        if (f <= bf) bf = f, bd = d;
-        if (g > 0.0) hi = th, gh = g;
-        else if (g < 0.0) lo = th, gl = g;
-        else return d;
-    }
-    if (it == 100) return bd;
+    circ_walk w = {s, C, bd, bd, bf};
+    int rc = prox_illinois(circ_walk_slope, &w, &lo, &hi, &gl, &gh, lo - gl * (hi - lo) / (gh - gl), PROX_TOL_ANGLE);
+    if (rc == 1) return w.last;
+    if (rc < 0) return w.bd;
     for (int k = 0, side = 0; exact && k < 24; ++k) {
         double th = (lo * gh - hi * gl) / (gh - gl);
         if (!(th > lo && th < hi)) break; /* no angle between them */
@@ -444,13 +473,15 @@ static void kinks_global(cvx *s)
 /* ---- Newton on the sphere ---------------------------------------------------------------------- */
 
 /* One Riemannian Newton step (steepest descent where the Hessian T^T H T - phi I is not positive
- * definite) with backtracking; the accepted length, 0 when nothing decreased phi. */
-static double newton_step(cvx *s, prox_vec3 *dp, double *fp)
+ * definite) with backtracking; the accepted length, 0 when nothing decreased phi. *gp is P's support
+ * point at *dp (phi's gradient there), and phi(*dp) = *fp = gp . dp: each point of the line search
+ * takes its support point, which is the next step's gradient when the point is accepted. */
+static double newton_step(cvx *s, prox_vec3 *dp, double *fp, prox_vec3 *gp)
 {
-    prox_vec3 d = *dp, t1 = prox_v3_any_perp(d), t2 = prox_v3_cross(d, t1), g = phi_grad(s, d);
-    double f = *fp, g1 = prox_v3_dot(g, t1), g2 = prox_v3_dot(g, t2);
-    prox_vec3 h1 = phi_hess(s, d, t1), h2 = phi_hess(s, d, t2);
-    double a = prox_v3_dot(t1, h1) - f, b = prox_v3_dot(t1, h2), c = prox_v3_dot(t2, h2) - f, det = a * c - b * b, x1, x2;
+    prox_vec3 d = *dp, t1 = prox_v3_any_perp(d), t2 = prox_v3_cross(d, t1), g = *gp;
+    double f = *fp, g1 = prox_v3_dot(g, t1), g2 = prox_v3_dot(g, t2), h[3];
+    phi_form(s, d, t1, t2, h);
+    double a = h[0] - f, b = h[1], c = h[2] - f, det = a * c - b * b, x1, x2;
     if (a > 0.0 && det > 0.0) {
         x1 = -(c * g1 - b * g2) / det;
         x2 = -(a * g2 - b * g1) / det;
@@ -469,9 +500,10 @@ static double newton_step(cvx *s, prox_vec3 *dp, double *fp)
     int halvings = a > 0.0 && det > 0.0 ? s->nhalvings : s->halvings;
     for (int ls = 0; ls < halvings; ++ls) {
         prox_vec3 dn = unit(prox_v3_add(d, prox_v3_add(prox_v3_scale(t1, x1), prox_v3_scale(t2, x2))));
-        double fn = phi_eval(s, dn);
+        prox_vec3 gn = phi_grad(s, dn);
+        double fn = prox_v3_dot(gn, dn);
         if (fn < f) {
-            *dp = dn, *fp = fn;
+            *dp = dn, *fp = fn, *gp = gn;
             record(s, dn, fn);
             return len;
         }
@@ -482,10 +514,11 @@ static double newton_step(cvx *s, prox_vec3 *dp, double *fp)
 
 static void cell_newton(cvx *s, prox_vec3 d)
 {
-    double f = phi_eval(s, d);
+    prox_vec3 g = phi_grad(s, d);
+    double f = prox_v3_dot(g, d);
     record(s, d, f);
     for (int it = 0; it < 60; ++it)
-        if (newton_step(s, &d, &f) < PROX_TOL_STEP) break;
+        if (newton_step(s, &d, &f, &g) < PROX_TOL_STEP) break;
 }
 
 /* Norm of the tangential gradient. */
@@ -503,12 +536,12 @@ static prox_vec3 polish_cell(const cvx *s, prox_vec3 d)
     for (int it = 0; it < 8 && gn > 0.0; ++it) {
         double f = phi_eval(s, d);
         prox_vec3 t1 = prox_v3_any_perp(d), t2 = prox_v3_cross(d, t1), g = phi_grad(s, d);
-        double g1 = prox_v3_dot(g, t1), g2 = prox_v3_dot(g, t2);
-        prox_vec3 h1 = phi_hess(s, d, t1), h2 = phi_hess(s, d, t2);
+        double g1 = prox_v3_dot(g, t1), g2 = prox_v3_dot(g, t2), h[3];
+        phi_form(s, d, t1, t2, h);
         /* regularised (a touching rim has a rank-one Hessian and phi ~ 0: along the null direction
          * the gradient vanishes too, the shift only keeps the solve defined) */
         double mu = PROX_TOL_SEARCH * s->S;
-        double a = prox_v3_dot(t1, h1) - f + mu, b = prox_v3_dot(t1, h2), c = prox_v3_dot(t2, h2) - f + mu, det = a * c - b * b;
+        double a = h[0] - f + mu, b = h[1], c = h[2] - f + mu, det = a * c - b * b;
         double l1 = 0.5 * (a + c) + prox_hypot2(0.5 * (a - c), b), x1, x2;
         if (l1 > 0.0 && !(det > 1e-12 * l1 * l1)) {
             /* one stiff direction (a needle's axis: 2e9 S per rad) beside a nearly flat one: the
