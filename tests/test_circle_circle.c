@@ -184,6 +184,27 @@ static void test_circle_circle_near_touching(void **state)
     }
 }
 
+/* Minima near th = pi of a's frame, where the half-angle polynomial's leading coefficient vanishes
+ * (t = tan(th/2) -> infinity): b's nearest point to a lies at pi + delta, delta = +-1e-9..1e-2, b
+ * tilted up to 0.5 rad and 1.5..5 away, where the solver takes the frame a quarter turn away (or both):
+ * every local minimum found by brute force must be among its stationary angles. */
+static void test_circle_circle_near_pi(void **state)
+{
+    (void)state;
+    test_rng g = test_rng_seed(31);
+    prox_circle a = {prox_v3(0.1, -0.2, 0.3), prox_v3_normalize(prox_v3(0.2, -0.1, 1)), 1.0};
+    prox_vec3 u, v;
+    prox_circle_frame(&a, &u, &v);
+    for (int i = 0; i < 600; ++i) {
+        double delta = (i % 2 ? 1 : -1) * pow(10.0, test_range(&g, -9, -2)), th = PROX_PI + delta;
+        prox_vec3 dir = prox_v3_add(prox_v3_scale(u, cos(th)), prox_v3_scale(v, sin(th)));
+        double far = test_range(&g, 1.5, 5), rb = test_range(&g, 0.2, 3), tilt = test_range(&g, 0, 0.5);
+        prox_vec3 nb = prox_v3_normalize(prox_v3_add(a.normal, prox_v3_scale(test_unit(&g), tilt)));
+        prox_circle b = {prox_v3_mad(a.center, far + rb, dir), nb, rb};
+        check_pair(&a, &b, 1e-12, 1);
+    }
+}
+
 /* Scales 1e-6..1e6 and translations up to 1e8 from the origin: relative accuracy is kept. */
 static void test_circle_circle_scales(void **state)
 {
@@ -310,6 +331,7 @@ int main(void)
         cmocka_unit_test(test_circle_circle_hand_made),    cmocka_unit_test(test_circle_circle_bad_input),
         cmocka_unit_test(test_circle_circle_random),       cmocka_unit_test(test_circle_circle_near_touching),
         cmocka_unit_test(test_circle_circle_scales),       cmocka_unit_test(test_circle_circle_special_random),
+        cmocka_unit_test(test_circle_circle_near_pi),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

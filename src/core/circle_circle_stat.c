@@ -237,19 +237,25 @@ static cc_prob cc_quarter_turn(const cc_prob *p)
     return q;
 }
 
-/* Starting angles from the real roots of the degree-8 polynomial of p, shifted by `turn`. The
- * half-angle substitution represents angles near pi badly (t -> infinity, coefficients dominated by
- * rounding), so callers solve in two frames a quarter turn apart: every angle is then far from pi in
- * one of them. Returns how many, or -PROX_ENUMERIC when the root finder m fails (the grid starts
- * alone could miss a pair of close stationary points, so the failure is reported, not papered over). */
-static int cc_starts(const cc_prob *p, prox_root_method m, double turn, double *starts)
+/* Starting angles from the real roots of the degree-8 polynomial F, shifted by `turn`. Returns how
+ * many, or -PROX_ENUMERIC when the root finder m fails (the grid starts alone could miss a pair of
+ * close stationary points, so the failure is reported, not papered over). */
+static int cc_starts(const double F[9], prox_root_method m, double turn, double *starts)
 {
-    double F[9], roots[8];
+    double roots[8];
     int nr = 0;
-    cc_poly(p, F);
     if (prox_poly_real_roots_by(m, F, 8, roots, &nr) != PROX_OK) return -(int)PROX_ENUMERIC;
     for (int i = 0; i < nr; ++i) starts[i] = 2.0 * atan(roots[i]) + turn;
     return nr;
+}
+
+/* 1 when F's leading coefficient is at least PROX_TOL_CC_LEAD of its largest (tol.h): the frame
+ * represents every angle well, pi included. */
+static int cc_lead_ok(const double F[9])
+{
+    double big = 0.0;
+    for (int k = 0; k < 9; ++k) big = fmax(big, fabs(F[k]));
+    return fabs(F[8]) >= PROX_TOL_CC_LEAD * big;
 }
 
 int prox_circle_circle_stationary(const prox_fcircle *a, const prox_fcircle *b, prox_root_method m, double th[8],
@@ -262,11 +268,22 @@ int prox_circle_circle_stationary(const prox_fcircle *a, const prox_fcircle *b, 
     if (!isfinite(p.scale) || !isfinite(p.nx + p.ny + p.nz)) return -(int)PROX_ENUMERIC;
     double cxy = prox_hypot2(p.cx, p.cy), nxy = prox_hypot2(p.nx, p.ny);
     if (nxy <= PROX_TOL_COAXIAL && cxy <= PROX_TOL_COAXIAL * p.scale) return 1; /* g is constant */
-    double starts[24];
-    int ns = cc_starts(&p, m, 0.0, starts);
+    /* The half-angle substitution represents angles near pi badly (t -> infinity, coefficients
+     * dominated by rounding): the polynomial is solved in a frame whose leading coefficient shows no
+     * root there, a quarter turn away if need be, and in both frames when neither does (every angle
+     * is then far from pi in one of them). */
+    double starts[24], F[9], G[9];
+    int ns = 0, nq = 0;
+    cc_poly(&p, F);
+    if (cc_lead_ok(F)) {
+        ns = cc_starts(F, m, 0.0, starts);
+    } else {
+        cc_prob q = cc_quarter_turn(&p);
+        cc_poly(&q, G);
+        if (!cc_lead_ok(G) && (ns = cc_starts(F, m, 0.0, starts)) < 0) return ns;
+        nq = cc_starts(G, m, 0.5 * PROX_PI, starts + ns);
+    }
     if (ns < 0) return ns;
-    cc_prob q = cc_quarter_turn(&p);
-    int nq = cc_starts(&q, m, 0.5 * PROX_PI, starts + ns);
     if (nq < 0) return nq;
     ns += nq;
     for (int k = 0; k < 8; ++k) starts[ns++] = 0.25 * PROX_PI * k; /* grid: safety net */

@@ -110,6 +110,14 @@
  * |h| = 2 |C.P'|, of the order of the scale. */
 #define PROX_TOL_CC_STAT 1e-8
 
+/* The half-angle polynomial of the circle-circle stationary points in one frame serves every angle
+ * when its leading coefficient is at least PROX_TOL_CC_LEAD of its largest: by Cauchy's bound every
+ * root then has |t| <= 1 + 1 / PROX_TOL_CC_LEAD (its angle at least ~2e-3 rad from pi, the angle t
+ * sends to infinity), and a rounding of eps of the largest coefficient moves a root by at most
+ * ~eps / PROX_TOL_CC_LEAD relative, which the Newton polish removes. Below it the frame a quarter
+ * turn away is tried, and when neither frame qualifies both are solved. */
+#define PROX_TOL_CC_LEAD 1e-3
+
 /* Two circles are coaxial (the distance from one to the other is constant) when the normal of b is
  * along a's and b's centre on a's axis to 16 eps (relative): the degree-8 equation vanishes there. */
 #define PROX_TOL_COAXIAL (16.0 * DBL_EPSILON)
