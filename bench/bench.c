@@ -2,7 +2,9 @@
  * benchmark/): the selected groups build their seeded inputs first, then every case is timed.
  * For each case and each of R >= 5 repeats: one batch pass gives the mean ns/query (total / n), one
  * pass timing every query on its own (clock overhead subtracted) gives the median and p99 ns/query;
- * the figure reported for each statistic is its median over the repeats.
+ * the figure reported for each statistic is its median over the repeats. Consecutive cases whose
+ * names agree up to their second '/' (a pair type of the mix group: prox and the peers on the same
+ * pairs) form a block whose cases take their repeats in turn (run_block).
  * Usage: prox_bench [--quick] [--long] [--repeats R] [--filter SUBSTRING] [--csv FILE]
  *                   [--validation DIR] [--pairs N] [--list] [--agarwal-cases]
  * (--pairs: Agarwal-protocol pairs; --agarwal-cases: the case-definition study of
@@ -125,27 +127,58 @@ typedef struct case_stats {
     double mean, median, p99;
 } case_stats;
 
-/* Runs one case: warm-up, then R repeats of a batch pass and a per-query pass. */
-static case_stats run_case(const bench_case *c, int repeats, double overhead)
+/* The timings of one case over the repeats. */
+typedef struct case_run {
+    const bench_case *c;
+    double *per, *means, *meds, *p99s;
+} case_run;
+
+/* One repeat of a case: a warm-up pass (the block's other cases ran since its last pass: caches,
+ * branch predictors), then a batch pass and a per-query pass. */
+static void run_repeat(case_run *u, int r, double overhead)
 {
-    case_stats st = {0, 0, 0};
-    if (c->n == 0) return st;
-    double *per = bench_xmalloc(c->n * sizeof *per);
-    double *means = bench_xmalloc((size_t)repeats * sizeof *means);
-    double *meds = bench_xmalloc((size_t)repeats * sizeof *meds);
-    double *p99s = bench_xmalloc((size_t)repeats * sizeof *p99s);
-    (void)time_batch(c); /* warm-up: caches, branch predictors, lazy GSL state */
-    for (int r = 0; r < repeats; ++r) {
-        means[r] = time_batch(c);
-        time_each(c, per, overhead);
-        meds[r] = bench_quantile(per, c->n, 0.5);
-        p99s[r] = bench_quantile(per, c->n, 0.99);
+    (void)time_batch(u->c);
+    u->means[r] = time_batch(u->c);
+    time_each(u->c, u->per, overhead);
+    u->meds[r] = bench_quantile(u->per, u->c->n, 0.5);
+    u->p99s[r] = bench_quantile(u->per, u->c->n, 0.99);
+}
+
+/* Runs a block of m cases: R repeats in which every case of the block takes its turn, so that a
+ * noisy spell of the machine falls on all of them alike rather than on whichever case it met; each
+ * statistic is the median over the repeats. */
+static void run_block(const bench_case *const *cs, int m, int repeats, double overhead, case_stats *st)
+{
+    case_run *u = bench_xmalloc((size_t)m * sizeof *u);
+    for (int i = 0; i < m; ++i) {
+        u[i].c = cs[i];
+        u[i].per = bench_xmalloc((cs[i]->n ? cs[i]->n : 1) * sizeof *u[i].per);
+        u[i].means = bench_xmalloc((size_t)repeats * sizeof *u[i].means);
+        u[i].meds = bench_xmalloc((size_t)repeats * sizeof *u[i].meds);
+        u[i].p99s = bench_xmalloc((size_t)repeats * sizeof *u[i].p99s);
     }
-    st.mean = bench_quantile(means, (size_t)repeats, 0.5);
-    st.median = bench_quantile(meds, (size_t)repeats, 0.5);
-    st.p99 = bench_quantile(p99s, (size_t)repeats, 0.5);
-    free(per), free(means), free(meds), free(p99s);
-    return st;
+    for (int r = 0; r < repeats; ++r)
+        for (int i = 0; i < m; ++i)
+            if (cs[i]->n) run_repeat(&u[i], r, overhead);
+    for (int i = 0; i < m; ++i) {
+        st[i] = (case_stats){0, 0, 0};
+        if (cs[i]->n) {
+            st[i].mean = bench_quantile(u[i].means, (size_t)repeats, 0.5);
+            st[i].median = bench_quantile(u[i].meds, (size_t)repeats, 0.5);
+            st[i].p99 = bench_quantile(u[i].p99s, (size_t)repeats, 0.5);
+        }
+        free(u[i].per), free(u[i].means), free(u[i].meds), free(u[i].p99s);
+    }
+    free(u);
+}
+
+/* Length of the prefix of a case name up to its second '/' (its block: "mix/TRC-RCC/" holds prox,
+ * its prepared solids and the peers on the same pairs); the whole name when it has fewer. */
+static size_t block_key(const char *name)
+{
+    const char *p = strchr(name, '/');
+    if (p) p = strchr(p + 1, '/');
+    return p ? (size_t)(p - name) + 1 : strlen(name);
 }
 
 static void usage(void)
@@ -259,16 +292,24 @@ int main(int argc, char **argv)
     printf("# prox_bench: %d repeats, clock overhead %.1f ns subtracted from per-query times%s\n", o.repeats,
            overhead, o.quick ? ", quick" : "");
     print_header(csv);
-    for (size_t k = 0; k < g_ncases; ++k) {
-        const bench_case *c = &g_cases[k];
-        if (o.filter && !strstr(c->name, o.filter)) continue;
+    /* the selected cases, timed in blocks of consecutive cases with the same block key */
+    const bench_case **sel = bench_xmalloc((g_ncases ? g_ncases : 1) * sizeof *sel);
+    case_stats *st = bench_xmalloc((g_ncases ? g_ncases : 1) * sizeof *st);
+    size_t ns = 0;
+    for (size_t k = 0; k < g_ncases; ++k)
+        if (!o.filter || strstr(g_cases[k].name, o.filter)) sel[ns++] = &g_cases[k];
+    for (size_t k = 0; k < ns;) {
+        size_t e = k + 1, key = block_key(sel[k]->name);
+        while (e < ns && block_key(sel[e]->name) == key && !strncmp(sel[e]->name, sel[k]->name, key)) ++e;
         if (list) {
-            printf("%s\n", c->name);
-            continue;
+            for (size_t i = k; i < e; ++i) printf("%s\n", sel[i]->name);
+        } else {
+            run_block(sel + k, (int)(e - k), o.repeats, overhead, st + k);
+            for (size_t i = k; i < e; ++i) print_row(csv, sel[i], &st[i], o.repeats);
         }
-        case_stats st = run_case(c, o.repeats, overhead);
-        print_row(csv, c, &st, o.repeats);
+        k = e;
     }
+    free(sel), free(st);
 #ifdef PROX_BENCH_HAVE_SCENE
     /* the scene module's bench (own rows): with no filter, or a filter naming it ("scene...") */
     if (!list && (!o.filter || !strncmp(o.filter, "scene", 5) || strstr("scene/", o.filter))) prox_bench_scene(csv);
