@@ -143,6 +143,12 @@ prox_vec3 prox_body_closest(const prox_body *b, prox_vec3 x)
     return prox_v3_add(b->c, y);
 }
 
+prox_vec3 prox_body_closest_warm(const prox_body *b, prox_vec3 x, double *warm)
+{
+    if (b->kind != PROX_BODY_ELL) return prox_body_closest(b, x);
+    return prox_v3_add(b->c, prox_ellb_closest_warm(&b->x.ell, prox_v3_sub(x, b->c), warm));
+}
+
 /* A unit vector perpendicular to the unit vector w. */
 static prox_vec3 any_perp(prox_vec3 w)
 {

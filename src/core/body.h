@@ -121,6 +121,10 @@ int prox_body_contains(const prox_body *b, prox_vec3 x, double tol);
 
 /* Closest point of the solid body to x (x itself when inside), absolute coordinates. */
 prox_vec3 prox_body_closest(const prox_body *b, prox_vec3 x);
+/* The same along a sequence of nearby points: *warm (NAN at first) carries what the body's closest-point
+ * iteration can start the next point from (the ELL's secular root, core/ellipse2.h); ignored by the
+ * closed forms. */
+prox_vec3 prox_body_closest_warm(const prox_body *b, prox_vec3 x, double *warm);
 
 /* Signed distance from x to the body's boundary (< 0 inside) and the closest boundary point *q,
  * absolute coordinates: the exact sphere-against-anything query is this minus the radius. */

@@ -54,6 +54,8 @@ int prox_ellb_contains(const prox_ellb *k, prox_vec3 y, double tol);
 prox_vec3 prox_cone_closest(const prox_cone *k, prox_vec3 y);
 prox_vec3 prox_ecyl_closest(const prox_ecyl *k, prox_vec3 y);
 prox_vec3 prox_ellb_closest(const prox_ellb *k, prox_vec3 y);
+/* The same, warm-started along a sequence of nearby points (core/ellipse2.h; *warm NAN at first). */
+prox_vec3 prox_ellb_closest_warm(const prox_ellb *k, prox_vec3 y, double *warm);
 
 /* Signed distance from y to the boundary (< 0 inside) and the closest boundary point *q. */
 double prox_cone_boundary(const prox_cone *k, prox_vec3 y, prox_vec3 *q);

@@ -4,6 +4,7 @@
  * and every query is that meridian ellipse's (core/ellipse2.h): the nearest point of a solid of
  * revolution lies in the point's half-plane. */
 #include <math.h>
+#include <stddef.h>
 
 #include "core/axis.h"
 #include "core/curved.h"
@@ -52,15 +53,17 @@ int prox_ellb_contains(const prox_ellb *k, prox_vec3 y, double tol)
     return prox_ellipse2_closest(k->a, k->b, t, rho, &q0, &q1) <= tol;
 }
 
-prox_vec3 prox_ellb_closest(const prox_ellb *k, prox_vec3 y)
+prox_vec3 prox_ellb_closest_warm(const prox_ellb *k, prox_vec3 y, double *warm)
 {
     double rho, q0, q1;
     prox_vec3 u;
     double t = half_plane(k, y, &rho, &u);
     if (prox_ellipse2_inside(k->a, k->b, t, rho)) return y;
-    prox_ellipse2_closest(k->a, k->b, t, rho, &q0, &q1);
+    prox_ellipse2_closest_warm(k->a, k->b, t, rho, warm, &q0, &q1);
     return prox_v3_mad(prox_v3_scale(k->w, q0), q1, u);
 }
+
+prox_vec3 prox_ellb_closest(const prox_ellb *k, prox_vec3 y) { return prox_ellb_closest_warm(k, y, NULL); }
 
 double prox_ellb_boundary(const prox_ellb *k, prox_vec3 y, prox_vec3 *q)
 {

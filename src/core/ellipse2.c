@@ -14,6 +14,7 @@
 
 #include <float.h>
 #include <math.h>
+#include <stddef.h>
 
 #include "core/tol.h"
 #include "prox/vec3.h"
@@ -39,12 +40,15 @@ static double secular(double n, double z, double d, double w, double *df)
     return a * a + b * b - 1.0;
 }
 
-/* The root of F in [lo, hi] (F(lo) >= 0 >= F(hi)): Newton from the left end, where it converges
- * monotonically (F convex decreasing), with a bisection whenever a step would leave the bracket or
- * fails to halve the step before it (Numerical Recipes' rtsafe safeguard). */
-static double secular_root(double n, double z, double d, double lo, double hi)
+/* The root of F in [lo, hi] (F(lo) >= 0 >= F(hi)): Newton from u in the bracket (its left end, where
+ * Newton converges monotonically, F being convex decreasing, or a warm start), with a bisection
+ * whenever a step would leave the bracket or fails to halve the step before it (Numerical Recipes'
+ * rtsafe safeguard). */
+static double secular_root(double n, double z, double d, double lo, double hi, double u)
 {
-    double u = lo, df, f = secular(n, z, d, u, &df);
+    double df, f = secular(n, z, d, u, &df);
+    if (f > 0.0) lo = u;
+    else if (f < 0.0) hi = u;
     double dx = hi - lo, dxold = dx;
     for (int it = 0; it < PROX_ELLIPSE_MAXIT && f != 0.0; ++it) {
         if (((u - hi) * df - f) * ((u - lo) * df - f) > 0.0 || fabs(2.0 * f) > fabs(dxold * df)) {
@@ -69,8 +73,9 @@ static double secular_root(double n, double z, double d, double lo, double hi)
     return u;
 }
 
-/* First quadrant, e0 >= e1 > 0, y0, y1 >= 0: the nearest curve point and the signed distance. */
-static double quadrant(double e0, double e1, double y0, double y1, double *x0, double *x1)
+/* First quadrant, e0 >= e1 > 0, y0, y1 >= 0: the nearest curve point and the signed distance; warm
+ * (or NULL) as in prox_ellipse2_closest_warm. */
+static double quadrant(double e0, double e1, double y0, double y1, double *x0, double *x1, double *warm)
 {
     double r = e1 / e0, dd = (1.0 - r) * (1.0 + r), z0 = y0 / e0;
     double zz = (y1 / e0) * r; /* Z; 0 when y1 is so close to the major axis that it underflows */
@@ -83,7 +88,9 @@ static double quadrant(double e0, double e1, double y0, double y1, double *x0, d
             }
             double lo = fmax(zz, z0 - dd), hi = g < 0.0 ? r * r : prox_hypot2(z0, zz);
             if (hi < lo) hi = lo; /* rounding at the very boundary */
-            double w = secular_root(z0, zz, dd, lo, hi);
+            double u = warm && *warm > lo && *warm < hi ? *warm : lo;
+            double w = secular_root(z0, zz, dd, lo, hi, u);
+            if (warm) *warm = w;
             *x0 = e0 * (z0 / (w + dd));
             *x1 = e1 * (zz / w);
             double dist = prox_hypot2(*x0 - y0, *x1 - y1);
@@ -105,15 +112,20 @@ static double quadrant(double e0, double e1, double y0, double y1, double *x0, d
     return y0 - e0;
 }
 
-double prox_ellipse2_closest(double e0, double e1, double y0, double y1, double *x0, double *x1)
+double prox_ellipse2_closest_warm(double e0, double e1, double y0, double y1, double *warm, double *x0, double *x1)
 {
     double a0 = fabs(y0), a1 = fabs(y1), q0, q1, s;
     if (e0 >= e1) {
-        s = quadrant(e0, e1, a0, a1, &q0, &q1);
+        s = quadrant(e0, e1, a0, a1, &q0, &q1, warm);
     } else {
-        s = quadrant(e1, e0, a1, a0, &q1, &q0);
+        s = quadrant(e1, e0, a1, a0, &q1, &q0, warm);
     }
     *x0 = y0 < 0.0 ? -q0 : q0;
     *x1 = y1 < 0.0 ? -q1 : q1;
     return s;
+}
+
+double prox_ellipse2_closest(double e0, double e1, double y0, double y1, double *x0, double *x1)
+{
+    return prox_ellipse2_closest_warm(e0, e1, y0, y1, NULL, x0, x1);
 }

@@ -39,17 +39,19 @@ static double pb_gap(const prox_polytope *p, const prox_body *b, prox_vec3 n)
     return -prox_body_support(b, prox_v3_neg(n)) - prox_polytope_hc(p, n);
 }
 
-/* G(t) = (x(t) - P_B(x(t))).e at x(t) = a + t e, with x and y = P_B(x). */
+/* G(t) = (x(t) - P_B(x(t))).e at x(t) = a + t e, with x and y = P_B(x); warm carries B's closest-point
+ * iteration from one point of the edge to the next (prox_body_closest_warm). */
 typedef struct pb_edge_ctx {
     const prox_body *b;
     prox_vec3 a, e, *x, *y;
+    double warm;
 } pb_edge_ctx;
 
 static double pb_edge_g(void *ctx, double t)
 {
     pb_edge_ctx *q = ctx;
     *q->x = prox_v3_mad(q->a, t, q->e);
-    *q->y = prox_body_closest(q->b, *q->x);
+    *q->y = prox_body_closest_warm(q->b, *q->x, &q->warm);
     return prox_v3_dot(prox_v3_sub(*q->x, *q->y), q->e);
 }
 
@@ -57,7 +59,7 @@ static double pb_edge_g(void *ctx, double t)
  * ulps wide, or an end. Returns |y - x| of the pair (x on the segment, y on B). */
 static double pb_edge(const prox_body *b, prox_vec3 a, prox_vec3 c, double t0, prox_vec3 *x, prox_vec3 *y)
 {
-    pb_edge_ctx q = {b, a, prox_v3_sub(c, a), x, y};
+    pb_edge_ctx q = {b, a, prox_v3_sub(c, a), x, y, NAN};
     double lo = 0.0, hi = 1.0, glo = pb_edge_g(&q, lo);
     if (glo >= 0.0) return prox_v3_dist(*x, *y);
     double ghi = pb_edge_g(&q, hi);
