@@ -15,8 +15,8 @@
  * (the Riemannian Hessian T^T H T - phi I is positive definite when phi < 0) in the cells where both
  * hc are smooth, and exact one-dimensional solves on each kink of either body near the optimum (the
  * cone points and face normals, the great circles of side lines and polytope edges, the small circle
- * of a cone's lateral surface) and at their crossings: phi is smooth along each kink circle, so a
- * safeguarded secant on its derivative reaches it to rounding; polytope faces and edges are points
+ * of a cone's lateral surface) and at their crossings: phi is smooth along each kink circle, so
+ * regula falsi with the Illinois halving on its derivative reaches it to rounding; polytope faces and edges are points
  * and circles of this list, so the answer is reached in finitely many steps. The witnesses are the
  * closest pair of the two support sets (points, segments, polygons, disks and ellipses) seen along
  * the normal, polished by exact projections; certified when |p2 - p1| meets -phi within
