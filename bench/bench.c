@@ -1,10 +1,10 @@
 /* prox_bench: one benchmark program with a table of named cases (after Box2D's
  * benchmark/): the selected groups build their seeded inputs first, then every case is timed.
- * For each case and each of R >= 5 repeats: one batch pass gives the mean ns/query (total / n), one
- * pass timing every query on its own (clock overhead subtracted) gives the median and p99 ns/query;
- * the figure reported for each statistic is its median over the repeats. Consecutive cases whose
- * names agree up to their second '/' (a pair type of the mix group: prox and the peers on the same
- * pairs) form a block whose cases take their repeats in turn (run_block).
+ * For each case and each of R >= 5 repeats, after a warm-up pass: one batch pass gives the mean
+ * ns/query (total / n), one pass timing every query on its own (clock overhead subtracted) gives the
+ * median and p99 ns/query; the figure reported for each statistic is its median over the repeats.
+ * Consecutive cases whose names agree up to their second '/' (a pair type of the mix group: prox
+ * and the peers on the same pairs) form a block whose cases take their repeats in turn (run_block).
  * Usage: prox_bench [--quick] [--long] [--repeats R] [--filter SUBSTRING] [--csv FILE]
  *                   [--validation DIR] [--pairs N] [--list] [--agarwal-cases]
  * (--pairs: Agarwal-protocol pairs; --agarwal-cases: the case-definition study of

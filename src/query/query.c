@@ -84,18 +84,22 @@ static int poly_fits(const prox_shape *s)
     return thin < 2;
 }
 
-/* The route of a pair of kinds whose polytopes keep their shape or not (fa, fb: poly_fits): a
- * polytope pair with a box too thin for its polytope goes to the support-function method. */
-static route route_fitted(prox_shape_kind ka, prox_shape_kind kb, int fa, int fb)
+/* The polytope route r (ROUTE_POLY, ROUTE_POLY_BODY) of a pair whose polytopes keep their shape or
+ * not (fa, fb: poly_fits; A of kind ka): a polytope pair with a box too thin for its polytope goes to
+ * the support-function method. */
+static route route_fitted(route r, prox_shape_kind ka, int fa, int fb)
 {
-    route r = route_of(ka, kb);
     if (r == ROUTE_POLY_BODY) return (kind_poly(ka) ? fa : fb) ? r : ROUTE_CONVEX;
-    return r == ROUTE_POLY && !(fa && fb) ? ROUTE_CONVEX : r;
+    return fa && fb ? r : ROUTE_CONVEX;
 }
 
+/* The route of a pair of shapes; a box's edge lengths are read for the polytope routes alone (the
+ * sphere and BOX-RCC routes take any box). */
 static route route_shapes(const prox_shape *a, const prox_shape *b)
 {
-    return route_fitted(a->kind, b->kind, poly_fits(a), poly_fits(b));
+    route r = route_of(a->kind, b->kind);
+    if (r != ROUTE_POLY && r != ROUTE_POLY_BODY) return r;
+    return route_fitted(r, a->kind, poly_fits(a), poly_fits(b));
 }
 
 /* PROX_OK when both pointers and kinds can be dispatched (the shapes themselves are validated by
@@ -781,7 +785,8 @@ PROX_API const prox_shape *prox_solid_shape(const prox_solid *s) { return s ? &s
 /* The route of a pair of solids: route_shapes on what the solids know. */
 static route solid_route(const prox_solid *a, const prox_solid *b)
 {
-    return route_fitted(a->shape.kind, b->shape.kind, a->fits, b->fits);
+    route r = route_of(a->shape.kind, b->shape.kind);
+    return r == ROUTE_POLY || r == ROUTE_POLY_BODY ? route_fitted(r, a->shape.kind, a->fits, b->fits) : r;
 }
 
 /* The polytope-curved pair of two solids. */

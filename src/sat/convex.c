@@ -16,8 +16,8 @@
  * hc are smooth, and exact one-dimensional solves on each kink of either body near the optimum (the
  * cone points and face normals, the great circles of side lines and polytope edges, the small circle
  * of a cone's lateral surface) and at their crossings: phi is smooth along each kink circle, so
- * regula falsi with the Illinois halving on its derivative reaches it to rounding; polytope faces and edges are points
- * and circles of this list, so the answer is reached in finitely many steps. The witnesses are the
+ * regula falsi with the Illinois halving on its derivative reaches it to rounding; polytope faces and
+ * edges are points and circles of this list, so the answer is reached in finitely many steps. The witnesses are the
  * closest pair of the two support sets (points, segments, polygons, disks and ellipses) seen along
  * the normal, polished by exact projections; certified when |p2 - p1| meets -phi within
  * PROX_TOL_CERT S. Overlapping: global sampling, every kink circle searched whole, Newton from the best
@@ -124,6 +124,12 @@ static void sqrt_form(double q, double m11, double m12, double m22, double e1, d
     h[0] += (m11 - e1 * e1 * iq2) * iq, h[1] += (m12 - e1 * e2 * iq2) * iq, h[2] += (m22 - e2 * e2 * iq2) * iq;
 }
 
+/* k (x1.x2) over the projections x1, x2 of the tangent vectors: the form of k times a projection. */
+static void proj_form(double k, prox_vec3 x1, prox_vec3 x2, double h[3])
+{
+    h[0] += k * prox_v3_norm2(x1), h[1] += k * prox_v3_dot(x1, x2), h[2] += k * prox_v3_norm2(x2);
+}
+
 /* r |P d| (P the projection across the unit axis w): H = r/|Pd| (P - p p^T), p = Pd / |Pd|, the
  * projection across w and p; each tangent vector projected once. A radius below PROX_TOL_NOISE of the
  * unit-scale pair adds less than rounding to phi, and near the axis r / |Pd| would swamp the other
@@ -135,9 +141,7 @@ static void lateral_form(prox_vec3 w, double r, prox_vec3 d, prox_vec3 t1, prox_
     double n = prox_v3_norm(perp);
     if (!(n > 0.0) || !(r > PROX_TOL_NOISE)) return;
     prox_vec3 p = prox_v3_scale(perp, 1.0 / n);
-    prox_vec3 x1 = prox_v3_reject(prox_v3_reject(t1, w), p), x2 = prox_v3_reject(prox_v3_reject(t2, w), p);
-    double k = r / n;
-    h[0] += k * prox_v3_norm2(x1), h[1] += k * prox_v3_dot(x1, x2), h[2] += k * prox_v3_norm2(x2);
+    proj_form(r / n, prox_v3_reject(prox_v3_reject(t1, w), p), prox_v3_reject(prox_v3_reject(t2, w), p), h);
 }
 
 /* The form of hc's Hessian at d, where hc is smooth (zero for the polytopes). */
@@ -146,9 +150,8 @@ static void hc_form(const prox_body *b, prox_vec3 d, prox_vec3 t1, prox_vec3 t2,
     switch (b->kind) {
     case PROX_BODY_SPH: { /* r |d|: H = r / |d| (I - d d^T / |d|^2) */
         double n = prox_v3_norm(d);
-        prox_vec3 u = prox_v3_scale(d, 1.0 / n), x1 = prox_v3_reject(t1, u), x2 = prox_v3_reject(t2, u);
-        double k = b->r / n;
-        h[0] += k * prox_v3_norm2(x1), h[1] += k * prox_v3_dot(x1, x2), h[2] += k * prox_v3_norm2(x2);
+        prox_vec3 u = prox_v3_scale(d, 1.0 / n);
+        proj_form(b->r / n, prox_v3_reject(t1, u), prox_v3_reject(t2, u), h);
         return;
     }
     case PROX_BODY_CYL: lateral_form(b->cyl.w, b->cyl.r, d, t1, t2, h); return;

@@ -189,6 +189,7 @@ static int pd_ridge(pd_state *s, prox_vec3 e, double tol)
     double s0, s1, d2;
     if (!pd_shadow(s, e, &e1, &e2, &s0, &s1, &d2)) return 0;
     double q1 = prox_v3_dot(s->delta, e1), q2 = prox_v3_dot(s->delta, e2);
+    _Static_assert(2 * PROX_POLY_MAXV <= PROX_V2_HULL_MAX, "the shadow's corners fit prox_v2_hull");
     prox_v2 pts[2 * PROX_POLY_MAXV]; /* the corners' shadows moved by -+d: the hull's candidates */
     int n = 0, h[4 * PROX_POLY_MAXV + 2];
     for (int i = 0; i < s->p->nv; ++i) {

@@ -60,7 +60,7 @@ def cli_path():
     return shutil.which("prox")
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture
 def cli():
     path = cli_path()
     if path is None:
