@@ -124,6 +124,31 @@ int prox_body_contains(const prox_body *b, prox_vec3 x, double tol)
     }
 }
 
+static double pair_lower(const prox_body *a, const prox_body *b, prox_vec3 delta, prox_vec3 d)
+{
+    return -(prox_body_hc(a, d) + prox_body_hc(b, prox_v3_neg(d)) - prox_v3_dot(d, delta));
+}
+
+int prox_body_pair_certified(const prox_body *a, const prox_body *b, prox_vec3 delta, double S, prox_vec3 x,
+                             prox_vec3 y, const prox_vec3 *nf, double *lower, double *upper, prox_vec3 *n)
+{
+    prox_vec3 v = prox_v3_sub(y, x);
+    double up = prox_v3_norm(v), slack = PROX_TOL_CERT * S;
+    if (!(up > PROX_TOL_TOUCH * S)) return 0; /* touching: the direction is rounding */
+    prox_vec3 d = prox_v3_scale(v, 1.0 / up);
+    double lo = pair_lower(a, b, delta, d);
+    /* |y - x| below the lower bound: x and y are not both in the solids (rounding of a support point) */
+    if (!(fabs(up - lo) <= slack)) {
+        if (!nf || !(prox_v3_norm(prox_v3_sub(v, prox_v3_scale(*nf, up))) <= slack)) return 0;
+        d = *nf, lo = pair_lower(a, b, delta, d);
+        if (!(fabs(up - lo) <= slack)) return 0;
+    }
+    double tol = PROX_TOL_TOUCH * S;
+    if (!prox_body_contains(a, x, tol) || !prox_body_contains(b, y, tol)) return 0;
+    *lower = lo, *upper = up, *n = d;
+    return 1;
+}
+
 prox_vec3 prox_body_closest(const prox_body *b, prox_vec3 x)
 {
     prox_vec3 y = prox_v3_sub(x, b->c);

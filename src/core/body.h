@@ -126,6 +126,20 @@ prox_vec3 prox_body_closest(const prox_body *b, prox_vec3 x);
  * closed forms. */
 prox_vec3 prox_body_closest_warm(const prox_body *b, prox_vec3 x, double *warm);
 
+/* The certificate of a disjoint pair x in A, y in B (A's reference point at the origin, B's at delta:
+ * the support method's relative frame; S the pair's scale): along the pair's own direction
+ * n = (y - x) / |y - x| the weak-duality bound -phi(n) = -(hc_A(n) + hc_B(-n) - n.delta) <= distance
+ * <= |y - x| meets |y - x| within PROX_TOL_CERT S, and x and y lie in their solids (within
+ * PROX_TOL_TOUCH S: a support point put off its solid by rounding would certify a value below the
+ * distance). Along n itself, because a pair that meets -phi only at some other direction can lie
+ * ~sqrt(slack x size) off the closest points. A pair within the touching band (its direction is
+ * rounding) is never certified. nf (may be NULL): the exact normal of the pair's features (a face's,
+ * a side line's), tried when the pair's own direction fails and y - x lies along it to PROX_TOL_CERT S:
+ * the rounding of nearby points turns their direction by eps S / |y - x|, which costs the bound first
+ * order where a kink of phi passes through the normal (a side line's great circle, a face's normal).
+ * Returns 1 with *lower = -phi at the direction used, *upper = |y - x| and that direction *n. */
+int prox_body_pair_certified(const prox_body *a, const prox_body *b, prox_vec3 delta, double S, prox_vec3 x,
+                             prox_vec3 y, const prox_vec3 *nf, double *lower, double *upper, prox_vec3 *n);
 /* Signed distance from x to the body's boundary (< 0 inside) and the closest boundary point *q,
  * absolute coordinates: the exact sphere-against-anything query is this minus the radius. */
 double prox_body_boundary(const prox_body *b, prox_vec3 x, prox_vec3 *q);

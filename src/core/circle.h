@@ -63,6 +63,12 @@ int prox_circle_line_stationary(const prox_fcircle *c, prox_vec3 p, prox_vec3 w,
  * whose answer is then certified. */
 prox_unit2 prox_circle_line_local(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, prox_unit2 a0);
 
+/* A local minimum near a0 of k t + rho over circle c, t and rho the axial and radial coordinates of its
+ * points about the line through p with unit direction w: the distance to a cone's lateral surface
+ * rho = rho0 - k t, up to a constant factor (k = 0: a cylinder's). Safeguarded Newton, trig-free: the
+ * TRC pairs' fast path (distance/rim_pair.c), whose answer is then certified. */
+prox_unit2 prox_circle_cone_local(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, double k, prox_unit2 a0);
+
 /* The parameter interval [*s0, *s1] within [0, 1] of the segment p + s (q - p) that lies in the solid
  * cylinder (base, unit axis w, height h, radius r) enlarged by tol; 0 when they do not meet. The
  * radial part is measured around the closest approach to the axis, not by the discriminant

@@ -14,6 +14,7 @@
  * polished by Newton on the exact h. h == 0 identically (A = B = C = D = 0) exactly when the line is the
  * circle's axis. */
 #include "core/angle.h"
+#include "core/axis.h"
 #include "core/circle.h"
 #include "core/poly.h"
 #include "core/tol.h"
@@ -107,40 +108,59 @@ static cl_coef cl_make(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, prox_vec
     return k;
 }
 
-/* Local refinement for the RCC-RCC fast path: a local MINIMUM of the circle-to-line distance near
- * a (a candidate must be a minimum; Newton on h alone may stop at the maximum or wander to the other
- * minimum).  Safeguarded Newton on the unit vector of the angle (prox_unit2_step, no trigonometric
- * call): the Newton step where h' > 0, else a descent step of 0.5 rad, halved until the distance
- * decreases; below PROX_TOL_DESCENT_ROUND rad (quadratic regime, where the decrease is rounding) until
- * |h| does. */
-prox_unit2 prox_circle_line_local(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, prox_unit2 a)
+/* A local MINIMUM of a function g of the angle near a (a candidate must be a minimum; Newton on g'
+ * alone may stop at the maximum or wander to the other minimum). Safeguarded Newton on the unit
+ * vector of the angle (prox_unit2_step, no trigonometric call): the Newton step where g'' > 0, else a
+ * descent step of 0.5 rad, halved until g decreases; below PROX_TOL_DESCENT_ROUND rad (quadratic
+ * regime, where the decrease is rounding) until |g'| does. eval returns g and sets g' and g''. */
+typedef double (*u2_eval)(const void *ctx, prox_unit2 a, double *d1, double *d2);
+
+static prox_unit2 u2_newton_min(u2_eval eval, const void *ctx, prox_unit2 a)
 {
-    prox_vec3 e;
-    cl_coef k = cl_make(c, p, w, &e);
-    /* g/2 up to a constant: (e.u) cos + (e.v) sin - ((e.w) + (u.w) cos + (v.w) sin)^2 / 2 */
-    double eu = prox_v3_dot(e, c->u), ev = prox_v3_dot(e, c->v);
-    double al = prox_v3_dot(e, w), be = prox_v3_dot(c->u, w), ga = prox_v3_dot(c->v, w);
-#define CL_G(x) (eu * (x).c + ev * (x).s - 0.5 * (al + be * (x).c + ga * (x).s) * (al + be * (x).c + ga * (x).s))
-    double dh, h = cl_h_cs(&k, a.c, a.s, &dh), g = CL_G(a);
-    for (int it = 0; it < 40 && h != 0.0; ++it) {
-        double step = dh > 0.0 ? h / dh : (h > 0.0 ? 0.5 : -0.5);
+    double d1, d2, g = eval(ctx, a, &d1, &d2);
+    for (int it = 0; it < 40 && d1 != 0.0; ++it) {
+        double step = d2 > 0.0 ? d1 / d2 : (d1 > 0.0 ? 0.5 : -0.5);
         if (!(fabs(step) <= 0.5)) step = step > 0.0 ? 0.5 : -0.5;
         /* A Newton step in the quadratic regime leaves an error of order step^2: take it and stop. */
-        if (dh > 0.0 && fabs(step) <= PROX_TOL_NEWTON_QUAD) return prox_unit2_step(a, step);
+        if (d2 > 0.0 && fabs(step) <= PROX_TOL_NEWTON_QUAD) return prox_unit2_step(a, step);
         int moved = 0;
         for (int j = 0; j < 8 && !moved; ++j, step *= 0.5) {
             prox_unit2 an = prox_unit2_step(a, step);
-            double dhn, hn = cl_h_cs(&k, an.c, an.s, &dhn), gn = CL_G(an);
-            if (gn < g || (fabs(step) <= PROX_TOL_DESCENT_ROUND && fabs(hn) < fabs(h))) {
-                a = an, h = hn, dh = dhn, g = gn, moved = 1;
+            double e1, e2, gn = eval(ctx, an, &e1, &e2);
+            if (gn < g || (fabs(step) <= PROX_TOL_DESCENT_ROUND && fabs(e1) < fabs(d1))) {
+                a = an, g = gn, d1 = e1, d2 = e2, moved = 1;
                 break;
             }
             if (fabs(step) <= PROX_TOL_DESCENT_ROUND) break; /* quadratic regime: no decrease means converged */
         }
         if (!moved) break;
     }
-#undef CL_G
     return a;
+}
+
+/* The circle-to-line distance for the RCC-RCC fast path: g/2 up to a constant,
+ * (e.u) cos + (e.v) sin - ((e.w) + (u.w) cos + (v.w) sin)^2 / 2, its derivatives h and h'. */
+typedef struct cl_local {
+    cl_coef k;
+    double eu, ev, al, be, ga;
+} cl_local;
+
+static double cl_local_eval(const void *ctx, prox_unit2 a, double *d1, double *d2)
+{
+    const cl_local *l = ctx;
+    double t = l->al + l->be * a.c + l->ga * a.s;
+    *d1 = cl_h_cs(&l->k, a.c, a.s, d2);
+    return l->eu * a.c + l->ev * a.s - 0.5 * t * t;
+}
+
+prox_unit2 prox_circle_line_local(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, prox_unit2 a)
+{
+    prox_vec3 e;
+    cl_local l;
+    l.k = cl_make(c, p, w, &e);
+    l.eu = prox_v3_dot(e, c->u), l.ev = prox_v3_dot(e, c->v);
+    l.al = prox_v3_dot(e, w), l.be = prox_v3_dot(c->u, w), l.ga = prox_v3_dot(c->v, w);
+    return u2_newton_min(cl_local_eval, &l, a);
 }
 
 int prox_circle_line_stationary(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, double th[4], int *count)
@@ -215,4 +235,42 @@ double prox_circle_line_max_dist(prox_vec3 centre, prox_vec3 n, double r, prox_v
     prox_vec3 u = prox_v3_scale(x, 1.0 / sn), e = prox_v3_cross(w, u);
     double b = r * fabs(prox_v3_dot(n, w));
     return ellipse_farthest(r, fmin(b, r), fabs(prox_v3_dot(E, u)), fabs(prox_v3_dot(E, e)));
+}
+
+/* Local refinement of a rim against the lateral surface of a cone (TRC) or cylinder: a local minimum
+ * near a of F(theta) = k t + rho, t = (x - p).w and rho = |P (x - p)| the axial and radial coordinates
+ * of the circle's point x(theta) about the line through p along w (P across w). F is the distance to
+ * the surface rho = rho0 - k t (k = (r0 - r1) / h, the radius' decrease per unit height) up to the
+ * constant factor cos of the half-angle. Safeguarded Newton on the unit vector of the angle, as
+ * prox_circle_line_local; F' and F'' in closed form from y = P (x - p) and its derivatives:
+ * rho' = y.y' / rho, rho'' = (y'.y' + y.y'') / rho - rho'^2 / rho (u2_newton_min). A circle point on
+ * the line (rho = 0, F not differentiable) ends the search there. */
+typedef struct cc_cone {
+    prox_vec3 pe, pu, pv; /* P (c - p), r P u, r P v */
+    double k, al, be, ga; /* t = al + be cos + ga sin */
+} cc_cone;
+
+static double cc_cone_eval(const void *ctx, prox_unit2 a, double *d1, double *d2)
+{
+    const cc_cone *q = ctx;
+    prox_vec3 rad = prox_v3_add(prox_v3_scale(q->pu, a.c), prox_v3_scale(q->pv, a.s));
+    prox_vec3 y = prox_v3_add(q->pe, rad), y1 = prox_v3_sub(prox_v3_scale(q->pv, a.c), prox_v3_scale(q->pu, a.s));
+    double rho = prox_v3_norm(y), t = q->al + q->be * a.c + q->ga * a.s;
+    if (!(rho > 0.0)) {
+        *d1 = *d2 = 0.0;
+        return q->k * t;
+    }
+    double r1 = prox_v3_dot(y, y1) / rho;
+    *d1 = q->k * (q->ga * a.c - q->be * a.s) + r1;
+    *d2 = -q->k * (q->be * a.c + q->ga * a.s) + (prox_v3_norm2(y1) - prox_v3_dot(y, rad)) / rho - r1 * r1 / rho;
+    return q->k * t + rho;
+}
+
+prox_unit2 prox_circle_cone_local(const prox_fcircle *c, prox_vec3 p, prox_vec3 w, double k, prox_unit2 a)
+{
+    prox_vec3 e = prox_v3_sub(c->c, p);
+    cc_cone q = {prox_axis_across(e, w), prox_v3_scale(prox_axis_across(c->u, w), c->r),
+                 prox_v3_scale(prox_axis_across(c->v, w), c->r), k, prox_v3_dot(e, w),
+                 c->r * prox_v3_dot(c->u, w), c->r * prox_v3_dot(c->v, w)};
+    return u2_newton_min(cc_cone_eval, &q, a);
 }

@@ -18,6 +18,7 @@
 #ifndef PROX_DISTANCE_CURVED_INTERNAL_H
 #define PROX_DISTANCE_CURVED_INTERNAL_H
 
+#include "core/body.h"
 #include "prox/result.h"
 #include "prox/shapes.h"
 
@@ -36,5 +37,10 @@ prox_signed_result prox_coaxial_signed_distance(const prox_shape *a, const prox_
  * PROX_TOL_CERT x scale), and point_set when the proximal points are not unique (a circle about the
  * axis or parallel facets). */
 prox_distance_result prox_coaxial_distance(const prox_shape *a, const prox_shape *b);
+
+/* Distance of two disjoint rim solids, a TRC against a TRC or an RCC (bodies of valid shapes, either
+ * order), by feature prediction (distance/rim_pair.c): 1 with the certified answer in *r, 0 when no
+ * candidate certified (overlapping, touching, or missed: the caller runs the support method). */
+int prox_rim_pair_distance(const prox_body *a, const prox_body *b, prox_distance_result *r);
 
 #endif

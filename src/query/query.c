@@ -358,6 +358,7 @@ static prox_distance_result convex_distance(const prox_shape *a, const prox_shap
     if (prox_coaxial_pair(a, b)) return prox_coaxial_distance(a, b);
     prox_distance_result r;
     if (convex_meet(ba, bb, &r)) return r;
+    if (prox_rim_pair_distance(ba, bb, &r)) return r;
     return prox_convex_distance(ba, bb);
 }
 

@@ -1832,24 +1832,12 @@ static void common_point(cvx *s, const gjk_out *g, prox_distance_result *r, prox
     info->certified = r->certified;
 }
 
-/* The early certificate of a disjoint pair x in A, y in B: the weak-duality bound -phi along the
- * pair's own direction n = (y - x) / |y - x| within PROX_TOL_CERT S of |y - x|. Along n itself, so
- * that x and y lie on the supporting planes at n to that slack and n is the normal: a pair that only
- * matched -phi at some other direction (GJK's) can be ~sqrt(slack x size) off the closest points.
- * |y - x| is an upper bound only for x in A and y in B, which the membership tests confirm (to the
- * touching band): a support point put off its solid by rounding would make it a false one. */
+/* The early certificate of a disjoint pair x in A, y in B: -phi along the pair's own direction meets
+ * |y - x| and both points lie in their solids (prox_body_pair_certified, core/body.h). */
 static int pair_certified(const cvx *s, prox_vec3 x, prox_vec3 y, cvx_answer *r)
 {
-    prox_vec3 v = prox_v3_sub(y, x);
-    double up = prox_v3_norm(v);
-    if (!(up > PROX_TOL_TOUCH * s->S)) return 0; /* touching: the direction is rounding */
-    prox_vec3 n = prox_v3_scale(v, 1.0 / up);
-    double lower = -phi_eval(s, n);
-    /* |y - x| below the lower bound: x and y are not both in the solids (rounding of a support point) */
-    if (!(fabs(up - lower) <= PROX_TOL_CERT * s->S)) return 0;
-    double tol = PROX_TOL_TOUCH * s->S;
-    if (!prox_body_contains(&s->a, x, tol) || !prox_body_contains(&s->b, y, tol)) return 0;
-    r->lower = lower, r->upper = up, r->n = n, r->p1 = x, r->p2 = y;
+    if (!prox_body_pair_certified(&s->a, &s->b, s->delta, s->S, x, y, NULL, &r->lower, &r->upper, &r->n)) return 0;
+    r->p1 = x, r->p2 = y;
     return 1;
 }
 
