@@ -47,7 +47,7 @@ static void check_pair(const prox_shape *sa, const prox_shape *sb, stats *st)
     assert_int_equal(g.status, PROX_OK);
     st->pairs++;
     st->disjoint += !g.intersect;
-    if (!prox_rim_pair_distance(&a, &b, &r)) return;
+    if (!prox_rim_pair_distance(&a, &b, &r, NULL)) return;
     double tol = BAR * S + 16.0 * DBL_EPSILON * (prox_v3_norm(r.p1) + S);
     assert_int_equal(r.status, PROX_OK);
     assert_true(r.certified);

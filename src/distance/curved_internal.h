@@ -39,8 +39,10 @@ prox_signed_result prox_coaxial_signed_distance(const prox_shape *a, const prox_
 prox_distance_result prox_coaxial_distance(const prox_shape *a, const prox_shape *b);
 
 /* Distance of two disjoint rim solids, a TRC against a TRC or an RCC (bodies of valid shapes, either
- * order), by feature prediction (distance/rim_pair.c): 1 with the certified answer in *r, 0 when no
- * candidate certified (overlapping, touching, or missed: the caller runs the support method). */
-int prox_rim_pair_distance(const prox_body *a, const prox_body *b, prox_distance_result *r);
+ * order), by feature prediction (distance/rim_pair.c): 1 with the certified answer in *r and, when
+ * normal is not NULL, the unit direction of its certificate in *normal (from A to B); 1 with a common
+ * point (r->intersect) when a candidate found one; 0 when no candidate certified (overlapping,
+ * touching, or missed: the caller runs the support method). */
+int prox_rim_pair_distance(const prox_body *a, const prox_body *b, prox_distance_result *r, prox_vec3 *normal);
 
 #endif

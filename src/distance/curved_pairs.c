@@ -116,6 +116,8 @@ static int make_coax(const prox_shape *a, const prox_shape *b, coax *f)
     if (!rev_shape(a, &v[0]) || !rev_shape(b, &v[1])) return 0;
     int k = prox_v3_norm2(v[0].w) > 0.0 ? 0 : 1; /* the body whose axis is the frame's */
     if (!(prox_v3_norm2(v[k].w) > 0.0)) return 0;  /* two spheres */
+    /* axes not parallel, the common case: no frame to build */
+    if (prox_v3_norm2(v[1 - k].w) > 0.0 && prox_v3_norm(prox_v3_cross(v[1 - k].w, v[k].w)) > PROX_TOL_COAXIAL_REV) return 0;
     f->o = v[k].anchor, f->w = v[k].w;
     f->u = prox_v3_any_perp(f->w);
     prox_vec3 dc = prox_v3_add(prox_v3_sub(v[1].anchor, v[0].anchor), prox_v3_sub(v[1].hv, v[0].hv));

@@ -88,7 +88,7 @@ static int feature(const rsol *k, prox_vec3 n, prox_vec3 p, int *end)
 typedef struct rpq {
     prox_body b[2];
     rsol k[2];
-    prox_vec3 delta, x, y, nf;
+    prox_vec3 delta, x, y, nf, n; /* n: the direction the certificate used */
     double S, d, lower;
     int fresh, done, common, has_nf;
 } rpq;
@@ -121,8 +121,7 @@ static int settle(rpq *q)
     if (q->done || !q->fresh) return q->done;
     q->fresh = 0;
     double up;
-    prox_vec3 n;
-    q->done = prox_body_pair_certified(&q->b[0], &q->b[1], q->delta, q->S, q->x, q->y, q->has_nf ? &q->nf : NULL, &q->lower, &up, &n);
+    q->done = prox_body_pair_certified(&q->b[0], &q->b[1], q->delta, q->S, q->x, q->y, q->has_nf ? &q->nf : NULL, &q->lower, &up, &q->n);
     return q->done;
 }
 
@@ -289,14 +288,15 @@ static int solve(rpq *q)
         tried |= 1 << code;
         n = prox_v3_scale(prox_v3_sub(q->y, q->x), 1.0 / q->d);
         pa = q->x, pb = q->y;
-        /* the best pair's direction does not separate the solids: likely an overlap, which the support
-         * method decides at less cost than more rounds */
-        if (!(prox_body_hc(&q->b[0], n) + prox_body_hc(&q->b[1], prox_v3_neg(n)) < prox_v3_dot(n, q->delta))) return 0;
+        /* the best pair's direction does not separate the solids: likely an overlap, whose common point
+         * is often the pair's midpoint; else the support method decides it at less cost than more rounds */
+        if (!(prox_body_hc(&q->b[0], n) + prox_body_hc(&q->b[1], prox_v3_neg(n)) < prox_v3_dot(n, q->delta)))
+            return common(q, 0, prox_v3_scale(prox_v3_add(q->x, q->y), 0.5));
     }
     return 0;
 }
 
-int prox_rim_pair_distance(const prox_body *a, const prox_body *b, prox_distance_result *r)
+int prox_rim_pair_distance(const prox_body *a, const prox_body *b, prox_distance_result *r, prox_vec3 *normal)
 {
     if (!((a->kind == PROX_BODY_CONE || b->kind == PROX_BODY_CONE) &&
           (a->kind == PROX_BODY_CONE || a->kind == PROX_BODY_CYL) && (b->kind == PROX_BODY_CONE || b->kind == PROX_BODY_CYL)))
@@ -326,5 +326,6 @@ int prox_rim_pair_distance(const prox_body *a, const prox_body *b, prox_distance
                                 .certificate_gap = q.lower / f,
                                 .certified = 1,
                                 .method = PROX_METHOD_FAST};
+    if (normal) *normal = q.n;
     return 1;
 }

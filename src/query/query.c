@@ -358,7 +358,7 @@ static prox_distance_result convex_distance(const prox_shape *a, const prox_shap
     if (prox_coaxial_pair(a, b)) return prox_coaxial_distance(a, b);
     prox_distance_result r;
     if (convex_meet(ba, bb, &r)) return r;
-    if (prox_rim_pair_distance(ba, bb, &r)) return r;
+    if (prox_rim_pair_distance(ba, bb, &r, NULL)) return r;
     return prox_convex_distance(ba, bb);
 }
 
@@ -380,9 +380,22 @@ static prox_signed_result convex_signed(const prox_shape *a, const prox_shape *b
     return convex_signed_bodies(ba, bb);
 }
 
+/* A disjoint TRC pair's signed distance from its certified distance (distance/rim_pair.c); 0 when the
+ * prediction declined or found a common point (the depth is the support method's). */
+static int rim_signed(const prox_body *ba, const prox_body *bb, prox_signed_result *s)
+{
+    prox_distance_result d;
+    prox_vec3 n;
+    if (!prox_rim_pair_distance(ba, bb, &d, &n) || d.intersect) return 0;
+    *s = (prox_signed_result){.status = PROX_OK, .sd = d.distance, .normal = n, .p1 = d.p1, .p2 = d.p2,
+                              .sd_lower = d.certificate_gap};
+    return 1;
+}
+
 static prox_signed_result convex_signed_bodies(const prox_body *ba, const prox_body *bb)
 {
-    prox_signed_result s = prox_convex_signed(ba, bb);
+    prox_signed_result s;
+    if (!rim_signed(ba, bb, &s)) s = prox_convex_signed(ba, bb);
     if (s.status == PROX_OK && s.sd > 0.0) {
         prox_vec3 v = prox_v3_sub(s.p2, s.p1);
         double len = prox_v3_norm(v), S = fmax(prox_v3_dist(ba->c, bb->c), fmax(ba->size, bb->size));
