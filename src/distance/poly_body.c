@@ -55,18 +55,42 @@ static double pb_edge_g(void *ctx, double t)
     return prox_v3_dot(prox_v3_sub(*q->x, *q->y), q->e);
 }
 
-/* The segment [a, c] against the body: the root of G (core/edge_root.h) from t0, to a bracket a few
- * ulps wide, or an end. Returns |y - x| of the pair (x on the segment, y on B). */
+/* A corner v of P with B's closest point to it, pv, and the closest-point iteration's state there
+ * (prox_body_closest_warm): the ends of the edges that meet at v share them. */
+typedef struct pb_corner {
+    prox_vec3 v, pv;
+    double warm;
+} pb_corner;
+
+static pb_corner pb_corner_at(const prox_body *b, prox_vec3 v)
+{
+    pb_corner k = {v, v, NAN};
+    k.pv = prox_body_closest_warm(b, v, &k.warm);
+    return k;
+}
+
+/* The segment between corners a and c against the body: an end when G does not change sign, else the
+ * root of G (core/edge_root.h) from t0, to a bracket a few ulps wide, warm from the end a. Returns
+ * |y - x| of the pair (x on the segment, y on B). */
+static double pb_edge_from(const prox_body *b, const pb_corner *a, const pb_corner *c, double t0, prox_vec3 *x, prox_vec3 *y)
+{
+    prox_vec3 e = prox_v3_sub(c->v, a->v);
+    double glo = prox_v3_dot(prox_v3_sub(a->v, a->pv), e), ghi = prox_v3_dot(prox_v3_sub(c->v, c->pv), e);
+    if (glo >= 0.0 || ghi <= 0.0) {
+        const pb_corner *k = glo >= 0.0 ? a : c;
+        *x = k->v, *y = k->pv;
+        return prox_v3_dist(*x, *y);
+    }
+    pb_edge_ctx q = {b, a->v, e, x, y, a->warm};
+    prox_edge_root(pb_edge_g, &q, 0.0, 1.0, glo, ghi, t0 > 0.0 && t0 < 1.0 ? t0 : 0.5, 4.0 * DBL_EPSILON);
+    return prox_v3_dist(*x, *y);
+}
+
+/* The segment [a, c] against the body (pb_edge_from with both ends solved here). */
 static double pb_edge(const prox_body *b, prox_vec3 a, prox_vec3 c, double t0, prox_vec3 *x, prox_vec3 *y)
 {
-    pb_edge_ctx q = {b, a, prox_v3_sub(c, a), x, y, NAN};
-    double lo = 0.0, hi = 1.0, glo = pb_edge_g(&q, lo);
-    if (glo >= 0.0) return prox_v3_dist(*x, *y);
-    double ghi = pb_edge_g(&q, hi);
-    if (ghi <= 0.0) return prox_v3_dist(*x, *y);
-    double t = t0 > lo && t0 < hi ? t0 : 0.5;
-    prox_edge_root(pb_edge_g, &q, lo, hi, glo, ghi, t, 4.0 * DBL_EPSILON);
-    return prox_v3_dist(*x, *y);
+    pb_corner ka = pb_corner_at(b, a), kc = pb_corner_at(b, c);
+    return pb_edge_from(b, &ka, &kc, t0, x, y);
 }
 
 /* Face f against the body: B's point lowest along the face's normal and its foot, when that lies in
@@ -100,11 +124,16 @@ static double pb_face(const prox_polytope *p, const prox_body *b, int f, prox_ve
         for (; at > 0 && lb[ord[at - 1]] > lb[k]; --at) ord[at] = ord[at - 1];
         ord[at] = k;
     }
+    /* the corners' closest points, each solved once for the two edges that meet there */
+    pb_corner corner[PROX_POLY_MAXFV];
+    int solved[PROX_POLY_MAXFV] = {0};
     double best = INFINITY;
     for (int i = 0; i < m && lb[ord[i]] < best; ++i) {
-        int k = ord[i];
+        int k = ord[i], k1 = k + 1 < m ? k + 1 : 0;
+        if (!solved[k]) corner[k] = pb_corner_at(b, p->v[p->fv[f][k]]), solved[k] = 1;
+        if (!solved[k1]) corner[k1] = pb_corner_at(b, p->v[p->fv[f][k1]]), solved[k1] = 1;
         prox_vec3 u, v;
-        double d = pb_edge(b, p->v[p->fv[f][k]], p->v[p->fv[f][k + 1 < m ? k + 1 : 0]], t0[k], &u, &v);
+        double d = pb_edge_from(b, &corner[k], &corner[k1], t0[k], &u, &v);
         if (d < best) best = d, *x = u, *y = v;
         if (!(best > 0.0)) break;
     }
