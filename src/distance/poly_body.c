@@ -10,8 +10,8 @@
  * edge or the interior of a face of P:
  * - an edge x(t) = a + t (b - a), t in [0, 1]: the distance from x(t) to the convex body is convex in t
  *   and G(t) = (x(t) - P_B(x(t))).(b - a) (half its squared derivative; P_B the closest point of B) is
- *   continuous and nondecreasing, so the closest pair is at the root of G or at an end (regula falsi
- *   with the Illinois modification);
+ *   continuous and nondecreasing, so the closest pair is at the root of G or at an end (the secant
+ *   inside the bracket, core/edge_root.h);
  * - a face with outward normal n: B's point lowest along n (its support point at -n), when its foot
  *   on the face's plane lies in the face; otherwise the closest pair lies on the face's border;
  * - a corner: the closest point of B to it, which the projections compute.
