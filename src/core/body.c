@@ -139,7 +139,10 @@ int prox_body_pair_certified(const prox_body *a, const prox_body *b, prox_vec3 d
     double lo = pair_lower(a, b, delta, d);
     /* |y - x| below the lower bound: x and y are not both in the solids (rounding of a support point) */
     if (!(fabs(up - lo) <= slack)) {
-        if (!nf || !(prox_v3_norm(prox_v3_sub(v, prox_v3_scale(*nf, up))) <= slack)) return 0;
+        /* the rounding of the points (4 eps S) turns their direction by up to 4 eps S / |y - x|, which
+         * costs at most the support sets' extent 2 S times that at a kink: more is no rounding */
+        if (!nf || !(up - lo <= slack * (1.0 + 2.0 * S / up))) return 0;
+        if (!(prox_v3_norm(prox_v3_sub(v, prox_v3_scale(*nf, up))) <= slack)) return 0;
         d = *nf, lo = pair_lower(a, b, delta, d);
         if (!(fabs(up - lo) <= slack)) return 0;
     }

@@ -134,9 +134,10 @@ prox_vec3 prox_body_closest_warm(const prox_body *b, prox_vec3 x, double *warm);
  * distance). Along n itself, because a pair that meets -phi only at some other direction can lie
  * ~sqrt(slack x size) off the closest points. A pair within the touching band (its direction is
  * rounding) is never certified. nf (may be NULL): the exact normal of the pair's features (a face's,
- * a side line's), tried when the pair's own direction fails and y - x lies along it to PROX_TOL_CERT S:
- * the rounding of nearby points turns their direction by eps S / |y - x|, which costs the bound first
- * order where a kink of phi passes through the normal (a side line's great circle, a face's normal).
+ * a side line's), tried when the pair's own direction falls short by no more than rounding can cost
+ * and y - x lies along nf to PROX_TOL_CERT S: the rounding of nearby points (4 eps S) turns their
+ * direction by up to 4 eps S / |y - x|, which costs the bound first order, up to 2 S times that, where
+ * a kink of phi passes through the normal (a side line's great circle, a face's normal).
  * Returns 1 with *lower = -phi at the direction used, *upper = |y - x| and that direction *n. */
 int prox_body_pair_certified(const prox_body *a, const prox_body *b, prox_vec3 delta, double S, prox_vec3 x,
                              prox_vec3 y, const prox_vec3 *nf, double *lower, double *upper, prox_vec3 *n);

@@ -90,7 +90,8 @@ typedef struct rpq {
     rsol k[2];
     prox_vec3 delta, x, y, nf, n; /* n: the direction the certificate used */
     double S, d, lower;
-    int fresh, done, common, has_nf;
+    int fresh, done, common, has_nf, face_of; /* face_of: 1 + the solid whose face normal at its
+                                               * point is the pair's, found when needed */
 } rpq;
 
 /* A candidate pair: xi on solid i, yj on the other, and the exact normal of their features from i
@@ -111,9 +112,11 @@ static void offer(rpq *q, int i, prox_vec3 xi, prox_vec3 yj, const prox_vec3 *ni
     double d = prox_v3_dist(x, y);
     if (!(d < q->d)) return;
     q->x = x, q->y = y, q->d = d, q->fresh = 1;
-    q->has_nf = nij != NULL;
+    q->has_nf = nij != NULL, q->face_of = 0;
     if (nij) q->nf = i ? prox_v3_neg(*nij) : *nij;
 }
+
+static int face_normal(const rpq *q, const rsol *k, prox_vec3 y, prox_vec3 *n);
 
 /* 1 once the best candidate is certified (a new best is tried once). */
 static int settle(rpq *q)
@@ -122,15 +125,41 @@ static int settle(rpq *q)
     q->fresh = 0;
     double up;
     q->done = prox_body_pair_certified(&q->b[0], &q->b[1], q->delta, q->S, q->x, q->y, q->has_nf ? &q->nf : NULL, &q->lower, &up, &q->n);
+    if (!q->done && q->face_of) { /* the other solid's face normal at its point, from outside it */
+        int j = q->face_of - 1;
+        if (face_normal(q, &q->k[j], j ? q->y : q->x, &q->nf)) {
+            if (j == 1) q->nf = prox_v3_neg(q->nf);
+            q->done = prox_body_pair_certified(&q->b[0], &q->b[1], q->delta, q->S, q->x, q->y, &q->nf, &q->lower, &up, &q->n);
+        }
+    }
     return q->done;
 }
 
-/* The apex of solid i (end e, radius 0) and the other solid's closest point to it. */
+static int lateral_foot(const rsol *k, prox_vec3 x, prox_vec3 *y, prox_vec3 *n);
+
+/* The outward normal of k at its boundary point y when y lies inside an end disk or inside a
+ * generator (to 64 eps S); 0 on a rim or an apex, where k's support function is smooth. */
+static int face_normal(const rpq *q, const rsol *k, prox_vec3 y, prox_vec3 *n)
+{
+    prox_vec3 d = prox_v3_sub(y, k->c), f;
+    double t = prox_v3_dot(d, k->w), rho = prox_v3_norm(prox_axis_across(d, k->w)), tol = PROX_TOL_CERT * q->S;
+    for (int e = 0; e < 2; ++e)
+        if (fabs(t - (e ? k->hh : -k->hh)) <= tol && rho < k->r[e] - tol) {
+            *n = e ? k->w : prox_v3_neg(k->w);
+            return 1;
+        }
+    return lateral_foot(k, y, &f, n) == 2 && prox_v3_dist(f, y) <= tol;
+}
+
+/* The apex of solid i (end e, radius 0) and the other solid's closest point to it; the other's face
+ * normal there, when it has one, is the pair's (settle). */
 static void cand_apex(rpq *q, int i, int e)
 {
     if (q->k[i].r[e] != 0.0) return;
     prox_vec3 x = end_centre(&q->k[i], e);
+    double d = q->d;
     offer(q, i, x, prox_body_closest(&q->b[1 - i], x), NULL);
+    if (q->d < d && !q->common) q->face_of = 2 - i;
 }
 
 /* Rim e of solid i against disk f of solid j: the rim's points extreme over the disk's plane (or,
@@ -160,14 +189,25 @@ static void cand_rim_disk(rpq *q, int i, int e, int f)
     }
 }
 
-/* Rim ea of A against rim eb of B: Newton from A's rim point extreme along n, B's closest rim point. */
+/* Rim ea of A against rim eb of B: Newton from A's rim point extreme along n, B's closest rim point;
+ * the common normal of the two circles there is across both tangents (as rcc_rcc.c takes it: exact
+ * however near the points, where their difference's direction is rounding). */
 static void cand_rim_rim(rpq *q, int ea, int eb, prox_vec3 n)
 {
     if (q->k[0].r[ea] == 0.0 || q->k[1].r[eb] == 0.0) return;
     prox_fcircle ca = rim(&q->k[0], ea), cb = rim(&q->k[1], eb);
     prox_unit2 a = prox_circle_circle_local(&ca, &cb, prox_unit2_of(prox_v3_dot(n, ca.u), prox_v3_dot(n, ca.v)));
-    prox_vec3 x = prox_fcircle_at(&ca, a);
-    offer(q, 0, x, prox_fcircle_closest(&cb, x, NULL), NULL);
+    prox_vec3 x = prox_fcircle_at(&ca, a), y = prox_fcircle_closest(&cb, x, NULL);
+    if (prox_v3_dist(x, y) > PROX_TOL_CC_NEAR * q->S) { /* the points' direction is good to eps S / d */
+        offer(q, 0, x, y, NULL);
+        return;
+    }
+    prox_vec3 ta = prox_v3_sub(prox_v3_scale(ca.v, a.c), prox_v3_scale(ca.u, a.s)), tb = prox_v3_cross(cb.n, prox_v3_sub(y, cb.c));
+    prox_vec3 m = prox_v3_cross(ta, tb);
+    double ml = prox_v3_norm(m);
+    int tangents = ml > PROX_TOL_TANGENT * prox_v3_norm(tb);
+    if (tangents) m = prox_v3_scale(m, (prox_v3_dot(m, prox_v3_sub(y, x)) < 0.0 ? -1.0 : 1.0) / ml);
+    offer(q, 0, x, y, tangents ? &m : NULL);
 }
 
 /* The point of k's lateral surface nearest to x along x's generator (its meridian half-plane): the
