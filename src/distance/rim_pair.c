@@ -41,7 +41,7 @@
  * (base, at c - hh w) and r[1] (top); the lateral normal's components nw, nu and the radius' decrease
  * per unit height k = (r0 - r1) / h. */
 typedef struct rsol {
-    prox_vec3 c, w;
+    prox_vec3 c, w, u, v; /* u, v: the rims' frame (prox_fcircle_make's) */
     double hh, r[2], nw, nu, k;
 } rsol;
 
@@ -55,6 +55,7 @@ static int rsol_of(const prox_body *b, rsol *k)
         return 0;
     }
     k->c = b->c;
+    k->u = prox_v3_any_perp(k->w), k->v = prox_v3_cross(k->w, k->u);
     double dr = k->r[0] - k->r[1], l = hypot(2.0 * k->hh, dr);
     k->nw = dr / l, k->nu = 2.0 * k->hh / l, k->k = dr / (2.0 * k->hh);
     return 1;
@@ -62,7 +63,7 @@ static int rsol_of(const prox_body *b, rsol *k)
 
 static prox_vec3 end_centre(const rsol *k, int e) { return prox_v3_mad(k->c, e ? k->hh : -k->hh, k->w); }
 
-static prox_fcircle rim(const rsol *k, int e) { return prox_fcircle_make(end_centre(k, e), k->w, k->r[e]); }
+static prox_fcircle rim(const rsol *k, int e) { return (prox_fcircle){end_centre(k, e), k->u, k->v, k->w, k->r[e]}; }
 
 /* The feature of k supporting the unit direction n (a guess: every candidate it selects is certified):
  * the lateral surface within PROX_PREDICT_ANGLE of its normals (end: the one nearer to p, the point
@@ -97,7 +98,8 @@ typedef struct rpq {
 /* A candidate pair: xi on solid i, yj on the other, and the exact normal of their features from i
  * towards the other (NULL: none, the pair's own direction alone certifies it). A point of one solid
  * inside the other (both membership tests passed with no tolerance, as every common point in prox)
- * decides an overlap. */
+ * decides an overlap; in: 0 when xi lies outside a half-space or cone that holds the other solid (no
+ * membership test needed). */
 static int common(rpq *q, int i, prox_vec3 xi)
 {
     if (!prox_body_contains(&q->b[1 - i], xi, 0.0) || !prox_body_contains(&q->b[i], xi, 0.0)) return 0;
@@ -105,9 +107,9 @@ static int common(rpq *q, int i, prox_vec3 xi)
     return 1;
 }
 
-static void offer(rpq *q, int i, prox_vec3 xi, prox_vec3 yj, const prox_vec3 *nij)
+static void offer(rpq *q, int i, prox_vec3 xi, prox_vec3 yj, const prox_vec3 *nij, int in)
 {
-    if (common(q, i, xi)) return;
+    if (in && common(q, i, xi)) return;
     prox_vec3 x = i ? yj : xi, y = i ? xi : yj;
     double d = prox_v3_dist(x, y);
     if (!(d < q->d)) return;
@@ -158,7 +160,7 @@ static void cand_apex(rpq *q, int i, int e)
     if (q->k[i].r[e] != 0.0) return;
     prox_vec3 x = end_centre(&q->k[i], e);
     double d = q->d;
-    offer(q, i, x, prox_body_closest(&q->b[1 - i], x), NULL);
+    offer(q, i, x, prox_body_closest(&q->b[1 - i], x), NULL, 1);
     if (q->d < d && !q->common) q->face_of = 2 - i;
 }
 
@@ -185,7 +187,7 @@ static void cand_rim_disk(rpq *q, int i, int e, int f)
         prox_vec3 x = prox_v3_mad(cc, ki->r[e], dir[s]);
         prox_vec3 y = prox_v3_mad(x, -prox_v3_dot(prox_v3_sub(x, D), m), m);
         prox_vec3 n = prox_v3_scale(m, f ? -1.0 : 1.0); /* into the disk's face from outside */
-        if (prox_v3_dist(y, D) <= kj->r[f]) offer(q, i, x, y, &n);
+        if (prox_v3_dist(y, D) <= kj->r[f]) offer(q, i, x, y, &n, prox_v3_dot(prox_v3_sub(y, x), n) <= 0.0);
     }
 }
 
@@ -199,7 +201,7 @@ static void cand_rim_rim(rpq *q, int ea, int eb, prox_vec3 n)
     prox_unit2 a = prox_circle_circle_local(&ca, &cb, prox_unit2_of(prox_v3_dot(n, ca.u), prox_v3_dot(n, ca.v)));
     prox_vec3 x = prox_fcircle_at(&ca, a), y = prox_fcircle_closest(&cb, x, NULL);
     if (prox_v3_dist(x, y) > PROX_TOL_CC_NEAR * q->S) { /* the points' direction is good to eps S / d */
-        offer(q, 0, x, y, NULL);
+        offer(q, 0, x, y, NULL, 1);
         return;
     }
     prox_vec3 ta = prox_v3_sub(prox_v3_scale(ca.v, a.c), prox_v3_scale(ca.u, a.s)), tb = prox_v3_cross(cb.n, prox_v3_sub(y, cb.c));
@@ -207,7 +209,7 @@ static void cand_rim_rim(rpq *q, int ea, int eb, prox_vec3 n)
     double ml = prox_v3_norm(m);
     int tangents = ml > PROX_TOL_TANGENT * prox_v3_norm(tb);
     if (tangents) m = prox_v3_scale(m, (prox_v3_dot(m, prox_v3_sub(y, x)) < 0.0 ? -1.0 : 1.0) / ml);
-    offer(q, 0, x, y, tangents ? &m : NULL);
+    offer(q, 0, x, y, tangents ? &m : NULL, 1);
 }
 
 /* The point of k's lateral surface nearest to x along x's generator (its meridian half-plane): the
@@ -238,7 +240,7 @@ static void cand_rim_lat(rpq *q, int i, int e, prox_vec3 g)
     prox_vec3 x = prox_fcircle_at(&c, a), y, n;
     int foot = lateral_foot(kj, x, &y, &n);
     n = prox_v3_neg(n); /* into the lateral surface from outside */
-    if (foot) offer(q, i, x, y, foot == 2 ? &n : NULL);
+    if (foot) offer(q, i, x, y, foot == 2 ? &n : NULL, foot == 1 || prox_v3_dot(prox_v3_sub(y, x), n) <= 0.0);
 }
 
 /* The generator of k whose outward normal has the radial direction of d. */
@@ -267,7 +269,7 @@ static void cand_lat_lat(rpq *q)
         generator(A, D, &a0, &a1);
         generator(B, prox_v3_neg(D), &b0, &b1);
         prox_seg_seg(a0, a1, b0, b1, &x, &y);
-        offer(q, 0, x, y, &D);
+        offer(q, 0, x, y, &D, 1);
     }
 }
 
