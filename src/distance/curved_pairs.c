@@ -134,8 +134,26 @@ static int make_coax(const prox_shape *a, const prox_shape *b, coax *f)
     return 1;
 }
 
+/* The axis vector of an RCC, TRC or ELL as its card gives it; 0 for another kind. */
+static int card_axis(const prox_shape *s, prox_vec3 *v)
+{
+    switch (s->kind) {
+    case PROX_SHAPE_RCC: *v = s->u.rcc.axis; return 1;
+    case PROX_SHAPE_TRC: *v = s->u.trc.axis; return 1;
+    case PROX_SHAPE_ELL: *v = s->u.ell.axis; return 1;
+    default: return 0;
+    }
+}
+
 int prox_coaxial_pair(const prox_shape *a, const prox_shape *b)
 {
+    /* two axes plainly not parallel (|va x vb| above the tolerance with a margin, in squares: no
+     * root, no division), the common case: no frame to build */
+    prox_vec3 va, vb;
+    if (card_axis(a, &va) && card_axis(b, &vb)) {
+        double t = 2.0 * PROX_TOL_COAXIAL_REV;
+        if (prox_v3_norm2(prox_v3_cross(va, vb)) > t * t * prox_v3_norm2(va) * prox_v3_norm2(vb)) return 0;
+    }
     coax f;
     return make_coax(a, b, &f);
 }
