@@ -822,6 +822,8 @@ PROX_API prox_distance_result prox_solid_distance(const prox_solid *a, const pro
         return poly_body_distance(&q);
     }
     case ROUTE_CONVEX: return convex_distance(sa, sb, &a->body, &b->body);
+    case ROUTE_SPH_B: return prox_query_sph_distance_valid(sa, &sb->u.sph);
+    case ROUTE_SPH_A: return mirror_d(prox_query_sph_distance_valid(sb, &sa->u.sph));
     default: return prox_shape_distance(sa, sb);
     }
 }
@@ -837,6 +839,8 @@ PROX_API prox_signed_result prox_solid_signed_distance(const prox_solid *a, cons
         return poly_body_signed(&q);
     }
     case ROUTE_CONVEX: return convex_signed(sa, sb, &a->body, &b->body);
+    case ROUTE_SPH_B: return prox_query_sph_signed_valid(sa, &sb->u.sph);
+    case ROUTE_SPH_A: return mirror_s(prox_query_sph_signed_valid(sb, &sa->u.sph));
     default: return prox_shape_signed_distance(sa, sb);
     }
 }

@@ -167,24 +167,39 @@ static prox_status sa_validate(const prox_shape *b, const prox_sph *s, int spher
     return sb != PROX_OK ? sb : prox_sph_validate(s);
 }
 
+/* The status of the pair (b and the sphere s, in the caller's order) and, for an RCC, its squared
+ * height. */
+static prox_status sph_pair_check(const prox_shape *b, const prox_sph *s, int sphere_first, double *h2)
+{
+    if (b->kind == PROX_SHAPE_RCC || b->kind == PROX_SHAPE_BOX) { /* the commonest pairs: no switch */
+        prox_status sb = b->kind == PROX_SHAPE_RCC ? prox_rcc_validate_h2(&b->u.rcc, h2) : prox_box_validate(&b->u.box);
+        prox_status ss = prox_sph_validate(s);
+        return sphere_first ? (ss != PROX_OK ? ss : sb) : (sb != PROX_OK ? sb : ss);
+    }
+    return sa_validate(b, s, sphere_first);
+}
+
+static prox_signed_result sph_signed_valid(const prox_shape *b, const prox_sph *s, double h2);
+
 prox_signed_result prox_query_sph_signed(const prox_shape *b, const prox_sph *s, int sphere_first)
 {
+    double h2 = 0.0;
+    prox_status st = sph_pair_check(b, s, sphere_first, &h2);
+    if (st != PROX_OK) return (prox_signed_result){.status = st};
+    return sph_signed_valid(b, s, h2);
+}
+
+prox_signed_result prox_query_sph_signed_valid(const prox_shape *b, const prox_sph *s)
+{
+    return sph_signed_valid(b, s, b->kind == PROX_SHAPE_RCC ? prox_v3_norm2(b->u.rcc.axis) : 0.0);
+}
+
+/* The signed distance of a valid pair (h2: an RCC's squared height). */
+static prox_signed_result sph_signed_valid(const prox_shape *b, const prox_sph *s, double h2)
+{
     prox_signed_result r;
-    prox_status st;
     prox_vec3 q, n;
-    double sdp, h2 = 0.0, size;
-    if (b->kind == PROX_SHAPE_RCC || b->kind == PROX_SHAPE_BOX) { /* the commonest pairs: no switch */
-        prox_status sb = b->kind == PROX_SHAPE_RCC ? prox_rcc_validate_h2(&b->u.rcc, &h2) : prox_box_validate(&b->u.box);
-        prox_status ss = prox_sph_validate(s);
-        st = sphere_first ? (ss != PROX_OK ? ss : sb) : (sb != PROX_OK ? sb : ss);
-    } else {
-        st = sa_validate(b, s, sphere_first);
-    }
-    if (st != PROX_OK) {
-        r = (prox_signed_result){0};
-        r.status = st;
-        return r;
-    }
+    double sdp, size;
     if (b->kind == PROX_SHAPE_RCC) {
         prox_cyl k = prox_cyl_make_h(&b->u.rcc, sqrt(h2), prox_v3(0, 0, 0));
         sdp = prox_cyl_signed(&k, s->center, &q, &n);
@@ -287,19 +302,27 @@ static prox_distance_result box_lean(const prox_box *b, const prox_sph *s)
     return sa_disjoint(q, dist, s, h_n, n);
 }
 
+static prox_distance_result sph_distance_valid(const prox_shape *b, const prox_sph *s, double h2);
+
 prox_distance_result prox_query_sph_distance(const prox_shape *b, const prox_sph *s, int sphere_first)
 {
+    double h2 = 0.0;
+    prox_status st = sph_pair_check(b, s, sphere_first, &h2);
+    if (st != PROX_OK) return (prox_distance_result){.status = st};
+    return sph_distance_valid(b, s, h2);
+}
+
+prox_distance_result prox_query_sph_distance_valid(const prox_shape *b, const prox_sph *s)
+{
+    return sph_distance_valid(b, s, b->kind == PROX_SHAPE_RCC ? prox_v3_norm2(b->u.rcc.axis) : 0.0);
+}
+
+/* The distance of a valid pair (h2: an RCC's squared height). */
+static prox_distance_result sph_distance_valid(const prox_shape *b, const prox_sph *s, double h2)
+{
     prox_distance_result r = {0};
-    if (b->kind == PROX_SHAPE_RCC || b->kind == PROX_SHAPE_BOX) {
-        double h2 = 0.0;
-        prox_status sb = b->kind == PROX_SHAPE_RCC ? prox_rcc_validate_h2(&b->u.rcc, &h2) : prox_box_validate(&b->u.box);
-        prox_status ss = prox_sph_validate(s);
-        r.status = sphere_first ? (ss != PROX_OK ? ss : sb) : (sb != PROX_OK ? sb : ss);
-        if (r.status != PROX_OK) return r;
-        return b->kind == PROX_SHAPE_RCC ? rcc_lean(&b->u.rcc, h2, s) : box_lean(&b->u.box, s);
-    }
-    r.status = sa_validate(b, s, sphere_first);
-    if (r.status != PROX_OK) return r;
+    if (b->kind == PROX_SHAPE_RCC) return rcc_lean(&b->u.rcc, h2, s);
+    if (b->kind == PROX_SHAPE_BOX) return box_lean(&b->u.box, s);
     sa_solid B;
     sa_prepare(b, &B);
     prox_vec3 q, n;
