@@ -54,4 +54,8 @@ static inline prox_distance_result prox_sph_distance_from_point(double d, prox_v
     return r;
 }
 
+/* SPH-SPH on spheres already validated (prepared solids): the public solvers after their checks. */
+prox_distance_result prox_sph_sph_distance_valid(const prox_sph *a, const prox_sph *b);
+prox_signed_result prox_sph_sph_signed_valid(const prox_sph *a, const prox_sph *b);
+
 #endif

@@ -13,9 +13,14 @@ static prox_vec3 centre_dir(prox_vec3 a, prox_vec3 b, double *d)
 
 PROX_API prox_signed_result prox_sph_sph_signed_distance(const prox_sph *a, const prox_sph *b)
 {
+    prox_status st = prox_valid2(prox_sph_validate(a), prox_sph_validate(b));
+    if (st != PROX_OK) return (prox_signed_result){.status = st};
+    return prox_sph_sph_signed_valid(a, b);
+}
+
+prox_signed_result prox_sph_sph_signed_valid(const prox_sph *a, const prox_sph *b)
+{
     prox_signed_result r = {0};
-    r.status = prox_valid2(prox_sph_validate(a), prox_sph_validate(b));
-    if (r.status != PROX_OK) return r;
     double d;
     r.normal = centre_dir(a->center, b->center, &d);
     r.sd = d - a->radius - b->radius;
@@ -32,9 +37,14 @@ PROX_API prox_signed_result prox_sph_sph_signed_distance(const prox_sph *a, cons
  * witnesses c_A + R_A n and c_B - R_B n, gap along n exactly sd. */
 PROX_API prox_distance_result prox_sph_sph_distance(const prox_sph *a, const prox_sph *b)
 {
+    prox_status st = prox_valid2(prox_sph_validate(a), prox_sph_validate(b));
+    if (st != PROX_OK) return (prox_distance_result){.status = st};
+    return prox_sph_sph_distance_valid(a, b);
+}
+
+prox_distance_result prox_sph_sph_distance_valid(const prox_sph *a, const prox_sph *b)
+{
     prox_distance_result r = {0};
-    r.status = prox_valid2(prox_sph_validate(a), prox_sph_validate(b));
-    if (r.status != PROX_OK) return r;
     prox_vec3 v = prox_v3_sub(b->center, a->center);
     double d = prox_v3_norm(v), ra = a->radius, rb = b->radius, sd = d - ra - rb;
     double rmax = ra > rb ? ra : rb, scale = d > 2.0 * rmax ? d : 2.0 * rmax; /* no NaN: validated */

@@ -815,6 +815,7 @@ PROX_API prox_distance_result prox_solid_distance(const prox_solid *a, const pro
 {
     if (!a || !b) return (prox_distance_result){.status = PROX_EINVAL_ARG};
     const prox_shape *sa = &a->shape, *sb = &b->shape;
+    if (sa->kind == PROX_SHAPE_SPH && sb->kind == PROX_SHAPE_SPH) return prox_sph_sph_distance_valid(&sa->u.sph, &sb->u.sph);
     switch (solid_route(a, b)) {
     case ROUTE_POLY: return poly_distance(sa, sb, &a->poly, &b->poly);
     case ROUTE_POLY_BODY: {
@@ -832,6 +833,7 @@ PROX_API prox_signed_result prox_solid_signed_distance(const prox_solid *a, cons
 {
     if (!a || !b) return (prox_signed_result){.status = PROX_EINVAL_ARG};
     const prox_shape *sa = &a->shape, *sb = &b->shape;
+    if (sa->kind == PROX_SHAPE_SPH && sb->kind == PROX_SHAPE_SPH) return prox_sph_sph_signed_valid(&sa->u.sph, &sb->u.sph);
     switch (solid_route(a, b)) {
     case ROUTE_POLY: return poly_signed(sa, sb, &a->poly, &b->poly);
     case ROUTE_POLY_BODY: {
