@@ -243,6 +243,30 @@ static void test_fast_close(void **state)
     run_family(4, 20, 305);
 }
 
+/* Two disjoint ellipsoids (2.6 apart, sizes ~2.8 and ~9.7) against their closest pair computed in
+ * 40-digit arithmetic (alternating exact projections to convergence): the distance query's early exit
+ * (Newton on the sphere from the centres' direction) must put its witnesses within 1e-14 S of it. Newton
+ * stopped on phi's rounding leaves the direction ~1e-8 rad off, the support points 1.5e-8 S off here;
+ * its last steps are judged by the gradient across the direction. */
+static void test_smooth_witness_reference(void **state)
+{
+    (void)state;
+    prox_shape a = prox_shape_from_ell((prox_ell){{0, 0, 0}, {0.69348784607972525, -1.2343040373115752, 0.30726945136629352}, 0.35646097167994623});
+    prox_shape b = prox_shape_from_ell((prox_ell){{-1.3128752692124426, -2.6112279678928543, -3.308140160110574},
+                                                  {2.5704714309445444, -3.4278060537862238, -2.5717451312295689}, 0.3388415072186407});
+    const prox_vec3 r1 = {-0.63578551934309955719, 0.61825398019979577479, -0.31045037556328192747};
+    const prox_vec3 r2 = {-2.7709110710768141505, -0.29714544727392292899, -1.5205524811456921136};
+    prox_body ba = prox_body_make(&a), bb = prox_body_make(&b);
+    double S = prox_shape_pair_scale(&a, &b);
+    unsigned long e0 = prox_convex_gjk_certified_count();
+    prox_distance_result f = prox_convex_distance(&ba, &bb), q = prox_shape_distance(&a, &b);
+    assert_true(prox_convex_gjk_certified_count() != e0); /* the early exit answered */
+    assert_true(f.certified && q.certified);
+    double ef = fmax(prox_v3_dist(f.p1, r1), prox_v3_dist(f.p2, r2)) / S, eq = fmax(prox_v3_dist(q.p1, r1), prox_v3_dist(q.p2, r2)) / S;
+    printf("ELL-ELL 40-digit reference: witnesses %.2g S (early exit), %.2g S (query) off\n", ef, eq);
+    assert_true(ef <= 1e-14 && eq <= 1e-14);
+}
+
 int main(void)
 {
     test_init();
@@ -254,6 +278,7 @@ int main(void)
         cmocka_unit_test(test_fast_close),
         cmocka_unit_test(test_signed_near),
         cmocka_unit_test(test_signed_shallow),
+        cmocka_unit_test(test_smooth_witness_reference),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -50,6 +50,7 @@
 #define CVX_GJK_IT 96      /* GJK iterations (polytopes finish in far fewer) */
 #define CVX_CIRCLE_SAMPLES 64
 #define CVX_GRAD_HALVINGS 8
+#define CVX_PHI_ROUND (16.0 * DBL_EPSILON) /* phi's rounding, in units of S: its terms are ~S each */
 
 #define CVX_LOCAL 0.05     /* radius (rad) of the local kink search around the best direction */
 #define CVX_NEAR 1e-5      /* a direction this close (rad) to a kink names it for the witnesses */
@@ -488,7 +489,19 @@ static double newton_step(cvx *s, prox_vec3 *dp, double *fp, prox_vec3 *gp)
     if (a > 0.0 && det > 0.0) {
         x1 = -(c * g1 - b * g2) / det;
         x2 = -(a * g2 - b * g1) / det;
-        if (-0.5 * (g1 * x1 + g2 * x2) <= PROX_TOL_DECREMENT * s->S) return 0.0; /* decrement at rounding */
+        if (-0.5 * (g1 * x1 + g2 * x2) <= CVX_PHI_ROUND * s->S) {
+            /* the decrement within phi's rounding (phi ~ S, its support values ~ S): phi's values no
+             * longer judge the step, and stopping here leaves the direction ~sqrt(rounding /
+             * curvature) off (1e-8 rad: support points 1e-8 S off the closest pair). The step is
+             * quadratic: taken while it lowers the gradient across the direction. */
+            prox_vec3 dn = unit(prox_v3_add(d, prox_v3_add(prox_v3_scale(t1, x1), prox_v3_scale(t2, x2))));
+            prox_vec3 gn = phi_grad(s, dn);
+            if (!(prox_v3_norm(prox_v3_reject(gn, dn)) < prox_hypot2(g1, g2))) return 0.0;
+            *dp = dn, *fp = prox_v3_dot(gn, dn), *gp = gn;
+            record(s, dn, *fp);
+            double len = prox_hypot2(x1, x2);
+            return len * len < PROX_TOL_STEP ? 0.0 : len; /* the next step, ~len^2, would be below it */
+        }
     } else {
         double sc = fabs(f) > 0.0 ? fabs(f) : 1.0;
         x1 = -g1 / sc;
@@ -515,13 +528,14 @@ static double newton_step(cvx *s, prox_vec3 *dp, double *fp, prox_vec3 *gp)
     return 0.0;
 }
 
-static void cell_newton(cvx *s, prox_vec3 d)
+static prox_vec3 cell_newton(cvx *s, prox_vec3 d)
 {
     prox_vec3 g = phi_grad(s, d);
     double f = prox_v3_dot(g, d);
     record(s, d, f);
     for (int it = 0; it < 60; ++it)
         if (newton_step(s, &d, &f, &g) < PROX_TOL_STEP) break;
+    return d; /* the last iterate: its last step judged by the gradient, not by phi's rounding */
 }
 
 /* Norm of the tangential gradient. */
@@ -1859,12 +1873,14 @@ static int newton_certified(cvx *s, const gjk_out *g, cvx_answer *r)
 {
     if (g->verdict != 1 || !(s->best_phi < 0.0)) return 0;
     s->halvings = s->nhalvings = CVX_GRAD_HALVINGS; /* a step that needs more has met a kink */
-    cell_newton(s, s->best_d);
+    prox_vec3 e = cell_newton(s, s->best_d);
     s->halvings = s->nhalvings = 30;
+    prox_vec3 x, y;
+    support_points(s, e, &x, &y); /* a smooth contact: the support points at Newton's last iterate */
+    if (pair_certified(s, x, y, r)) return 1;
     for (int i = 0; i < s->nk; ++i)
         if (!s->k[i].circle && kink_dist(&s->k[i], s->best_d) <= CVX_LOCAL) consider(s, s->k[i].w);
-    prox_vec3 x, y;
-    support_points(s, s->best_d, &x, &y); /* a smooth contact: the support points themselves */
+    support_points(s, s->best_d, &x, &y); /* a face's normal among the kink points */
     if (pair_certified(s, x, y, r)) return 1;
     kinks_local(s, s->best_d, s->near); /* an edge: the kink circles through the optimum */
     witness_disjoint(s, s->best_d, &x, &y);
@@ -1881,9 +1897,8 @@ static int smooth_certified(cvx *s, cvx_answer *r)
     if (s->nk != 0 || !(dn > 0.0)) return 0;
     prox_vec3 d = prox_v3_scale(s->delta, 1.0 / dn);
     if (!(phi_eval(s, d) < 0.0)) return 0;
-    cell_newton(s, d);
     prox_vec3 x, y;
-    support_points(s, s->best_d, &x, &y);
+    support_points(s, cell_newton(s, d), &x, &y);
     return pair_certified(s, x, y, r);
 }
 
