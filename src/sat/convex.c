@@ -444,13 +444,17 @@ static prox_vec3 circ_near(cvx *s, const cvx_kink *k, prox_vec3 d, double r, int
 
 /* Kinks within r of d: points evaluated, circles searched within r of d's projection, crossings of
  * two near circles evaluated. */
-static void kinks_local(cvx *s, prox_vec3 d, double r)
+static prox_vec3 kinks_local(cvx *s, prox_vec3 d, double r)
 {
+    prox_vec3 best = s->best_d;
+    double fb = INFINITY;
     for (int i = 0; i < s->nk; ++i) {
         const cvx_kink *k = &s->k[i];
         if (kink_dist(k, d) > r) continue;
         if (!k->circle) { consider(s, k->w); continue; }
-        circ_near(s, k, d, r, 0);
+        prox_vec3 c = circ_near(s, k, d, r, 0);
+        double fc = phi_eval(s, c);
+        if (fc < fb) fb = fc, best = c;
         for (int j = i + 1; j < s->nk; ++j) {
             prox_vec3 x[2];
             if (!s->k[j].circle || kink_dist(&s->k[j], d) > r) continue;
@@ -458,6 +462,10 @@ static void kinks_local(cvx *s, prox_vec3 d, double r)
                 if (angle(x[m], d) <= 2.0 * r) consider(s, x[m]);
         }
     }
+    /* the lowest circle minimum (the root of phi's slope along its circle, to PROX_TOL_ANGLE) when it
+     * ties the best direction to phi's rounding: the best by value is then rounding's pick among the
+     * search's points near it, up to ~1e-8 rad off the optimum */
+    return fb <= s->best_phi + CVX_PHI_ROUND * s->S ? best : s->best_d;
 }
 
 /* Every kink: points, the crossings of every two circles, every circle searched whole. */
@@ -1882,8 +1890,8 @@ static int newton_certified(cvx *s, const gjk_out *g, cvx_answer *r)
         if (!s->k[i].circle && kink_dist(&s->k[i], s->best_d) <= CVX_LOCAL) consider(s, s->k[i].w);
     support_points(s, s->best_d, &x, &y); /* a face's normal among the kink points */
     if (pair_certified(s, x, y, r)) return 1;
-    kinks_local(s, s->best_d, s->near); /* an edge: the kink circles through the optimum */
-    witness_disjoint(s, s->best_d, &x, &y);
+    prox_vec3 k = kinks_local(s, s->best_d, s->near); /* an edge: the kink circles through the optimum */
+    witness_disjoint(s, k, &x, &y);
     return pair_certified(s, x, y, r);
 }
 
