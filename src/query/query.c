@@ -811,6 +811,9 @@ static poly_curved solid_poly_curved(const prox_solid *a, const prox_solid *b)
     return (poly_curved){&p->poly, &p->body, &c->body, first};
 }
 
+/* An RCC's squared height |axis|^2 as its validation computes it (0 for another kind). */
+static double rcc_h2(const prox_shape *s) { return s->kind == PROX_SHAPE_RCC ? prox_v3_norm2(s->u.rcc.axis) : 0.0; }
+
 PROX_API prox_distance_result prox_solid_distance(const prox_solid *a, const prox_solid *b)
 {
     if (!a || !b) return (prox_distance_result){.status = PROX_EINVAL_ARG};
@@ -823,8 +826,8 @@ PROX_API prox_distance_result prox_solid_distance(const prox_solid *a, const pro
         return poly_body_distance(&q);
     }
     case ROUTE_CONVEX: return convex_distance(sa, sb, &a->body, &b->body);
-    case ROUTE_SPH_B: return prox_query_sph_distance_valid(sa, &sb->u.sph);
-    case ROUTE_SPH_A: return mirror_d(prox_query_sph_distance_valid(sb, &sa->u.sph));
+    case ROUTE_SPH_B: return prox_query_sph_distance_valid(sa, &sb->u.sph, rcc_h2(sa));
+    case ROUTE_SPH_A: return mirror_d(prox_query_sph_distance_valid(sb, &sa->u.sph, rcc_h2(sb)));
     default: return prox_shape_distance(sa, sb);
     }
 }
@@ -841,8 +844,8 @@ PROX_API prox_signed_result prox_solid_signed_distance(const prox_solid *a, cons
         return poly_body_signed(&q);
     }
     case ROUTE_CONVEX: return convex_signed(sa, sb, &a->body, &b->body);
-    case ROUTE_SPH_B: return prox_query_sph_signed_valid(sa, &sb->u.sph);
-    case ROUTE_SPH_A: return mirror_s(prox_query_sph_signed_valid(sb, &sa->u.sph));
+    case ROUTE_SPH_B: return prox_query_sph_signed_valid(sa, &sb->u.sph, rcc_h2(sa));
+    case ROUTE_SPH_A: return mirror_s(prox_query_sph_signed_valid(sb, &sa->u.sph, rcc_h2(sb)));
     default: return prox_shape_signed_distance(sa, sb);
     }
 }

@@ -18,9 +18,10 @@ prox_relation_result prox_shape_relation_with_signed(const prox_shape *a, const 
  * the sphere first when sphere_first (the order of the public call: its first shape reports first). */
 prox_signed_result prox_query_sph_signed(const prox_shape *b, const prox_sph *s, int sphere_first);
 prox_distance_result prox_query_sph_distance(const prox_shape *b, const prox_sph *s, int sphere_first);
-/* The same for a pair already validated (prepared solids): no validation, b first. */
-prox_signed_result prox_query_sph_signed_valid(const prox_shape *b, const prox_sph *s);
-prox_distance_result prox_query_sph_distance_valid(const prox_shape *b, const prox_sph *s);
+/* The same for a pair already validated (prepared solids): no validation, b first; h2 an RCC's squared
+ * height |axis|^2 (0 for another kind). */
+prox_signed_result prox_query_sph_signed_valid(const prox_shape *b, const prox_sph *s, double h2);
+prox_distance_result prox_query_sph_distance_valid(const prox_shape *b, const prox_sph *s, double h2);
 prox_test_result prox_query_sph_test(const prox_shape *b, const prox_sph *s, int sphere_first);
 
 /* BOX-RCC distance (box_rcc_signed.c): prox_box_rcc_distance, whose disjoint answer a pair 1e-10 ..

@@ -179,23 +179,14 @@ static prox_status sph_pair_check(const prox_shape *b, const prox_sph *s, int sp
     return sa_validate(b, s, sphere_first);
 }
 
-static prox_signed_result sph_signed_valid(const prox_shape *b, const prox_sph *s, double h2);
-
 prox_signed_result prox_query_sph_signed(const prox_shape *b, const prox_sph *s, int sphere_first)
 {
     double h2 = 0.0;
     prox_status st = sph_pair_check(b, s, sphere_first, &h2);
-    if (st != PROX_OK) return (prox_signed_result){.status = st};
-    return sph_signed_valid(b, s, h2);
+    return st != PROX_OK ? (prox_signed_result){.status = st} : prox_query_sph_signed_valid(b, s, h2);
 }
 
-prox_signed_result prox_query_sph_signed_valid(const prox_shape *b, const prox_sph *s)
-{
-    return sph_signed_valid(b, s, b->kind == PROX_SHAPE_RCC ? prox_v3_norm2(b->u.rcc.axis) : 0.0);
-}
-
-/* The signed distance of a valid pair (h2: an RCC's squared height). */
-static prox_signed_result sph_signed_valid(const prox_shape *b, const prox_sph *s, double h2)
+prox_signed_result prox_query_sph_signed_valid(const prox_shape *b, const prox_sph *s, double h2)
 {
     prox_signed_result r;
     prox_vec3 q, n;
@@ -302,23 +293,14 @@ static prox_distance_result box_lean(const prox_box *b, const prox_sph *s)
     return sa_disjoint(q, dist, s, h_n, n);
 }
 
-static prox_distance_result sph_distance_valid(const prox_shape *b, const prox_sph *s, double h2);
-
 prox_distance_result prox_query_sph_distance(const prox_shape *b, const prox_sph *s, int sphere_first)
 {
     double h2 = 0.0;
     prox_status st = sph_pair_check(b, s, sphere_first, &h2);
-    if (st != PROX_OK) return (prox_distance_result){.status = st};
-    return sph_distance_valid(b, s, h2);
+    return st != PROX_OK ? (prox_distance_result){.status = st} : prox_query_sph_distance_valid(b, s, h2);
 }
 
-prox_distance_result prox_query_sph_distance_valid(const prox_shape *b, const prox_sph *s)
-{
-    return sph_distance_valid(b, s, b->kind == PROX_SHAPE_RCC ? prox_v3_norm2(b->u.rcc.axis) : 0.0);
-}
-
-/* The distance of a valid pair (h2: an RCC's squared height). */
-static prox_distance_result sph_distance_valid(const prox_shape *b, const prox_sph *s, double h2)
+prox_distance_result prox_query_sph_distance_valid(const prox_shape *b, const prox_sph *s, double h2)
 {
     prox_distance_result r = {0};
     if (b->kind == PROX_SHAPE_RCC) return rcc_lean(&b->u.rcc, h2, s);
