@@ -95,11 +95,8 @@ typedef struct rpq {
                                                * point is the pair's, found when needed */
 } rpq;
 
-/* A candidate pair: xi on solid i, yj on the other, and the exact normal of their features from i
- * towards the other (NULL: none, the pair's own direction alone certifies it). A point of one solid
- * inside the other (both membership tests passed with no tolerance, as every common point in prox)
- * decides an overlap; in: 0 when xi lies outside a half-space or cone that holds the other solid (no
- * membership test needed). */
+/* A point xi of solid i inside the other (both membership tests passed with no tolerance, as every
+ * common point in prox) decides an overlap. */
 static int common(rpq *q, int i, prox_vec3 xi)
 {
     if (!prox_body_contains(&q->b[1 - i], xi, 0.0) || !prox_body_contains(&q->b[i], xi, 0.0)) return 0;
@@ -107,6 +104,9 @@ static int common(rpq *q, int i, prox_vec3 xi)
     return 1;
 }
 
+/* A candidate pair: xi on solid i, yj on the other, and the exact normal of their features from i
+ * towards the other (NULL: none, the pair's own direction alone certifies it); in: 0 when xi lies
+ * outside a half-space or cone that holds the other solid (no common-point test needed). */
 static void offer(rpq *q, int i, prox_vec3 xi, prox_vec3 yj, const prox_vec3 *nij, int in)
 {
     if (in && common(q, i, xi)) return;
@@ -126,7 +126,8 @@ static int settle(rpq *q)
     if (q->done || !q->fresh) return q->done;
     q->fresh = 0;
     double up;
-    q->done = prox_body_pair_certified(&q->b[0], &q->b[1], q->delta, q->S, q->x, q->y, q->has_nf ? &q->nf : NULL, &q->lower, &up, &q->n);
+    const prox_vec3 *nf = q->has_nf ? &q->nf : NULL;
+    q->done = prox_body_pair_certified(&q->b[0], &q->b[1], q->delta, q->S, q->x, q->y, nf, &q->lower, &up, &q->n);
     if (!q->done && q->face_of) { /* the other solid's face normal at its point, from outside it */
         int j = q->face_of - 1;
         if (face_normal(q, &q->k[j], j ? q->y : q->x, &q->nf)) {
@@ -204,7 +205,8 @@ static void cand_rim_rim(rpq *q, int ea, int eb, prox_vec3 n)
         offer(q, 0, x, y, NULL, 1);
         return;
     }
-    prox_vec3 ta = prox_v3_sub(prox_v3_scale(ca.v, a.c), prox_v3_scale(ca.u, a.s)), tb = prox_v3_cross(cb.n, prox_v3_sub(y, cb.c));
+    prox_vec3 ta = prox_v3_sub(prox_v3_scale(ca.v, a.c), prox_v3_scale(ca.u, a.s));
+    prox_vec3 tb = prox_v3_cross(cb.n, prox_v3_sub(y, cb.c));
     prox_vec3 m = prox_v3_cross(ta, tb);
     double ml = prox_v3_norm(m);
     int tangents = ml > PROX_TOL_TANGENT * prox_v3_norm(tb);
