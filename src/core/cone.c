@@ -111,11 +111,23 @@ prox_vec3 prox_cone_closest(const prox_cone *k, prox_vec3 y)
     return prox_v3_mad(prox_v3_scale(k->w, tq), rq, u);
 }
 
-/* Outward unit normal of the slanted edge: (r1 - r2, 2 hh) / |(2 hh, r2 - r1)|. */
-static void slant_normal(const prox_cone *k, double *nt, double *nr)
+void prox_cone_lateral_normal(const prox_cone *k, double *nt, double *nr)
 {
     double l = prox_hypot2(2.0 * k->hh, k->r2 - k->r1);
     *nt = (k->r1 - k->r2) / l, *nr = 2.0 * k->hh / l;
+}
+
+int prox_cone_lateral_foot(const prox_cone *k, prox_vec3 y, prox_vec3 *q, prox_vec3 *n)
+{
+    double rho, tq, rq, nt, nr;
+    prox_vec3 u;
+    double t = half_plane(k, y, &rho, &u);
+    if (!(rho > 0.0)) return 0;
+    slant_foot(k, t, rho, &tq, &rq);
+    prox_cone_lateral_normal(k, &nt, &nr);
+    *q = prox_v3_mad(prox_v3_scale(k->w, tq), rq, u);
+    *n = prox_v3_mad(prox_v3_scale(k->w, nt), nr, u);
+    return fabs(tq) < k->hh ? 2 : 1;
 }
 
 /* The unit vector (vt, vr) clamped into the normal cone spanned by the unit normals a and b of the two
@@ -145,7 +157,7 @@ static void clamp_cone(double vt, double vr, const double a[2], const double b[2
 static double trap_boundary(const prox_cone *k, double t, double rho, double *tq, double *rq, double *nt, double *nr)
 {
     double sn[2];
-    slant_normal(k, &sn[0], &sn[1]);
+    prox_cone_lateral_normal(k, &sn[0], &sn[1]);
     if (!trap_inside(k, t, rho)) {
         double d = trap_outside(k, t, rho, tq, rq);
         int top = *tq == k->hh && *rq == k->r2, base = *tq == -k->hh && *rq == k->r1;

@@ -57,6 +57,14 @@ prox_vec3 prox_ellb_closest(const prox_ellb *k, prox_vec3 y);
 /* The same, warm-started along a sequence of nearby points (core/ellipse2.h; *warm NAN at first). */
 prox_vec3 prox_ellb_closest_warm(const prox_ellb *k, prox_vec3 y, double *warm);
 
+/* The outward unit normal of a cone's lateral surface in a meridian half-plane: nt along the axis,
+ * nr across it, (r1 - r2, 2 hh) / |(2 hh, r2 - r1)|. */
+void prox_cone_lateral_normal(const prox_cone *k, double *nt, double *nr);
+/* The nearest point *q of the lateral surface to y (relative to c) in y's meridian half-plane: the
+ * foot on the generator there, clamped to its rims; *n the lateral normal on that generator. 2 for a
+ * foot inside the generator, 1 at a rim (where the normal is not unique), 0 for y on the axis. */
+int prox_cone_lateral_foot(const prox_cone *k, prox_vec3 y, prox_vec3 *q, prox_vec3 *n);
+
 /* Signed distance from y to the boundary (< 0 inside) and the closest boundary point *q. */
 double prox_cone_boundary(const prox_cone *k, prox_vec3 y, prox_vec3 *q);
 double prox_ecyl_boundary(const prox_ecyl *k, prox_vec3 y, prox_vec3 *q);

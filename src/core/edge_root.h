@@ -4,8 +4,9 @@
  * is continuous and nondecreasing: the closest pair is at the root of G or at an end. The root is
  * found by the secant method inside the bracket (Dekker 1969; regula falsi and bisection as its
  * safeguards), which converges superlinearly where G is smooth. BOX-RCC (distance/box_rcc.c) and every
- * polytope against a curved body (distance/poly_body.c) use it, and the support-function engine's
- * minimum along a kink circle (sat/convex.c: the root of phi's slope there). */
+ * polytope against a curved body (distance/poly_body.c) use it. The support-function engine's minimum
+ * along a kink circle (sat/convex.c: the root of phi's slope there) uses prox_illinois below, whose
+ * bracket, narrowed in place, the engine carries on to the rounding of the angle. */
 #ifndef PROX_CORE_EDGE_ROOT_H
 #define PROX_CORE_EDGE_ROOT_H
 

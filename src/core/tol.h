@@ -179,8 +179,11 @@
 #define PROX_TOL_DECREMENT 1e-17
 #define PROX_TOL_STEP 1e-13
 
-/* Rounding of phi: values within PROX_TOL_PHI_ROUND x S are equal (a kink's three-point test, the
- * snap onto a kink accepts a value that much worse). */
+/* Rounding of phi (its terms are ~S each): values within PROX_TOL_PHI_ROUND x S are equal (a kink's
+ * three-point test, the snap onto a kink accepts a value that much worse). Below it a Newton
+ * decrement no longer judges a step, which the general engine then judges by the gradient across the
+ * direction (sat/convex.c): stopping there leaves the direction ~sqrt(this / curvature) off, support
+ * points ~1e-8 S off the closest pair (the old engine, sat/sup_engine.c, stops at PROX_TOL_DECREMENT). */
 #define PROX_TOL_PHI_ROUND (16.0 * DBL_EPSILON)
 
 /* The snap onto a kink accepts a value of phi at most PROX_TOL_SNAP x S worse (its rounding): any

@@ -37,33 +37,34 @@
 #include "core/circle.h"
 #include "core/tol.h"
 
-/* A rim solid relative to the pair's frame: centre c, unit axis w, half height hh, end radii r[0]
- * (base, at c - hh w) and r[1] (top); the lateral normal's components nw, nu and the radius' decrease
- * per unit height k = (r0 - r1) / h. */
+/* A rim solid relative to the pair's frame: its centre c and the core's cone about it (an RCC as the
+ * cone of equal radii: unit axis w, half height hh, radius r1 at the base c - hh w, r2 at the top),
+ * the rims' frame u, v (prox_fcircle_make's), and the lateral normal's components nw along the axis
+ * and nu across it (prox_cone_lateral_normal). */
 typedef struct rsol {
-    prox_vec3 c, w, u, v; /* u, v: the rims' frame (prox_fcircle_make's) */
-    double hh, r[2], nw, nu, k;
+    prox_vec3 c, u, v;
+    prox_cone cone;
+    double nw, nu;
 } rsol;
 
 static int rsol_of(const prox_body *b, rsol *k)
 {
-    if (b->kind == PROX_BODY_CYL) {
-        k->w = b->cyl.w, k->hh = b->cyl.hh, k->r[0] = k->r[1] = b->cyl.r;
-    } else if (b->kind == PROX_BODY_CONE) {
-        k->w = b->x.cone.w, k->hh = b->x.cone.hh, k->r[0] = b->x.cone.r1, k->r[1] = b->x.cone.r2;
-    } else {
-        return 0;
-    }
+    if (b->kind == PROX_BODY_CYL) k->cone = (prox_cone){b->cyl.w, b->cyl.hh, b->cyl.r, b->cyl.r};
+    else if (b->kind == PROX_BODY_CONE) k->cone = b->x.cone;
+    else return 0;
     k->c = b->c;
-    k->u = prox_v3_any_perp(k->w), k->v = prox_v3_cross(k->w, k->u);
-    double dr = k->r[0] - k->r[1], l = hypot(2.0 * k->hh, dr);
-    k->nw = dr / l, k->nu = 2.0 * k->hh / l, k->k = dr / (2.0 * k->hh);
+    k->u = prox_v3_any_perp(k->cone.w), k->v = prox_v3_cross(k->cone.w, k->u);
+    prox_cone_lateral_normal(&k->cone, &k->nw, &k->nu);
     return 1;
 }
 
-static prox_vec3 end_centre(const rsol *k, int e) { return prox_v3_mad(k->c, e ? k->hh : -k->hh, k->w); }
+/* Radius of end e (0 the base, 1 the top); the radius' decrease per unit height, (r1 - r2) / h. */
+static double rad(const rsol *k, int e) { return e ? k->cone.r2 : k->cone.r1; }
+static double slope(const rsol *k) { return (k->cone.r1 - k->cone.r2) / (2.0 * k->cone.hh); }
 
-static prox_fcircle rim(const rsol *k, int e) { return (prox_fcircle){end_centre(k, e), k->u, k->v, k->w, k->r[e]}; }
+static prox_vec3 end_centre(const rsol *k, int e) { return prox_v3_mad(k->c, e ? k->cone.hh : -k->cone.hh, k->cone.w); }
+
+static prox_fcircle rim(const rsol *k, int e) { return (prox_fcircle){end_centre(k, e), k->u, k->v, k->cone.w, rad(k, e)}; }
 
 /* The feature of k supporting the unit direction n (a guess: every candidate it selects is certified):
  * the lateral surface within PROX_PREDICT_ANGLE of its normals (end: the one nearer to p, the point
@@ -73,13 +74,13 @@ enum { F_RIM, F_DISK, F_LAT, F_APEX };
 
 static int feature(const rsol *k, prox_vec3 n, prox_vec3 p, int *end)
 {
-    double t = prox_v3_dot(n, k->w);
+    double t = prox_v3_dot(n, k->cone.w);
     if (fabs(t - k->nw) < PROX_PREDICT_ANGLE * k->nu) {
-        *end = prox_v3_dot(prox_v3_sub(p, k->c), k->w) > 0.0;
+        *end = prox_v3_dot(prox_v3_sub(p, k->c), k->cone.w) > 0.0;
         return F_LAT;
     }
     *end = t > k->nw;
-    if (k->r[*end] == 0.0) return F_APEX;
+    if (rad(k, *end) == 0.0) return F_APEX;
     if (fabs(t) > 1.0 - 0.5 * PROX_PREDICT_ANGLE * PROX_PREDICT_ANGLE) return F_DISK;
     return F_RIM;
 }
@@ -145,10 +146,10 @@ static int lateral_foot(const rsol *k, prox_vec3 x, prox_vec3 *y, prox_vec3 *n);
 static int face_normal(const rpq *q, const rsol *k, prox_vec3 y, prox_vec3 *n)
 {
     prox_vec3 d = prox_v3_sub(y, k->c), f;
-    double t = prox_v3_dot(d, k->w), rho = prox_v3_norm(prox_axis_across(d, k->w)), tol = PROX_TOL_CERT * q->S;
+    double t = prox_v3_dot(d, k->cone.w), rho = prox_v3_norm(prox_axis_across(d, k->cone.w)), tol = PROX_TOL_CERT * q->S;
     for (int e = 0; e < 2; ++e)
-        if (fabs(t - (e ? k->hh : -k->hh)) <= tol && rho < k->r[e] - tol) {
-            *n = e ? k->w : prox_v3_neg(k->w);
+        if (fabs(t - (e ? k->cone.hh : -k->cone.hh)) <= tol && rho < rad(k, e) - tol) {
+            *n = e ? k->cone.w : prox_v3_neg(k->cone.w);
             return 1;
         }
     return lateral_foot(k, y, &f, n) == 2 && prox_v3_dist(f, y) <= tol;
@@ -158,7 +159,7 @@ static int face_normal(const rpq *q, const rsol *k, prox_vec3 y, prox_vec3 *n)
  * normal there, when it has one, is the pair's (settle). */
 static void cand_apex(rpq *q, int i, int e)
 {
-    if (q->k[i].r[e] != 0.0) return;
+    if (rad(&q->k[i], e) != 0.0) return;
     prox_vec3 x = end_centre(&q->k[i], e);
     double d = q->d;
     offer(q, i, x, prox_body_closest(&q->b[1 - i], x), NULL, 1);
@@ -171,24 +172,24 @@ static void cand_apex(rpq *q, int i, int e)
 static void cand_rim_disk(rpq *q, int i, int e, int f)
 {
     const rsol *ki = &q->k[i], *kj = &q->k[1 - i];
-    if (ki->r[e] == 0.0 || kj->r[f] == 0.0) return;
-    prox_vec3 cc = end_centre(ki, e), D = end_centre(kj, f), m = kj->w;
-    prox_vec3 pm = prox_axis_across(m, ki->w), dir[2];
+    if (rad(ki, e) == 0.0 || rad(kj, f) == 0.0) return;
+    prox_vec3 cc = end_centre(ki, e), D = end_centre(kj, f), m = kj->cone.w;
+    prox_vec3 pm = prox_axis_across(m, ki->cone.w), dir[2];
     double amp = prox_v3_norm(pm);
     int nd = 2;
     if (amp > PROX_TOL_NOISE) {
         dir[0] = prox_v3_scale(pm, 1.0 / amp), dir[1] = prox_v3_neg(dir[0]);
     } else {
-        prox_vec3 g = prox_axis_across(prox_v3_sub(D, cc), ki->w);
+        prox_vec3 g = prox_axis_across(prox_v3_sub(D, cc), ki->cone.w);
         double gl = prox_v3_norm(g);
-        dir[0] = gl > PROX_TOL_NOISE * (prox_v3_dist(D, cc) + ki->r[e]) ? prox_v3_scale(g, 1.0 / gl) : rim(ki, e).u;
+        dir[0] = gl > PROX_TOL_NOISE * (prox_v3_dist(D, cc) + rad(ki, e)) ? prox_v3_scale(g, 1.0 / gl) : ki->u;
         nd = 1;
     }
     for (int s = 0; s < nd; ++s) {
-        prox_vec3 x = prox_v3_mad(cc, ki->r[e], dir[s]);
+        prox_vec3 x = prox_v3_mad(cc, rad(ki, e), dir[s]);
         prox_vec3 y = prox_v3_mad(x, -prox_v3_dot(prox_v3_sub(x, D), m), m);
         prox_vec3 n = prox_v3_scale(m, f ? -1.0 : 1.0); /* into the disk's face from outside */
-        if (prox_v3_dist(y, D) <= kj->r[f]) offer(q, i, x, y, &n, prox_v3_dot(prox_v3_sub(y, x), n) <= 0.0);
+        if (prox_v3_dist(y, D) <= rad(kj, f)) offer(q, i, x, y, &n, prox_v3_dot(prox_v3_sub(y, x), n) <= 0.0);
     }
 }
 
@@ -197,7 +198,7 @@ static void cand_rim_disk(rpq *q, int i, int e, int f)
  * however near the points, where their difference's direction is rounding). */
 static void cand_rim_rim(rpq *q, int ea, int eb, prox_vec3 n)
 {
-    if (q->k[0].r[ea] == 0.0 || q->k[1].r[eb] == 0.0) return;
+    if (rad(&q->k[0], ea) == 0.0 || rad(&q->k[1], eb) == 0.0) return;
     prox_fcircle ca = rim(&q->k[0], ea), cb = rim(&q->k[1], eb);
     prox_unit2 a = prox_circle_circle_local(&ca, &cb, prox_unit2_of(prox_v3_dot(n, ca.u), prox_v3_dot(n, ca.v)));
     prox_vec3 x = prox_fcircle_at(&ca, a), y = prox_fcircle_closest(&cb, x, NULL);
@@ -214,21 +215,14 @@ static void cand_rim_rim(rpq *q, int ea, int eb, prox_vec3 n)
     offer(q, 0, x, y, tangents ? &m : NULL, 1);
 }
 
-/* The point of k's lateral surface nearest to x along x's generator (its meridian half-plane): the
- * foot on the generator segment, clamped to its ends, and *n the outward normal there. 2 for a foot
- * inside the generator, 1 at a rim (the normal is then not unique), 0 when x is on the axis. */
+/* The point of k's lateral surface nearest to x in x's meridian half-plane and the outward normal
+ * there (prox_cone_lateral_foot): 2 for a foot inside the generator, 1 at a rim (the normal is then
+ * not unique), 0 when x is on the axis. */
 static int lateral_foot(const rsol *k, prox_vec3 x, prox_vec3 *y, prox_vec3 *n)
 {
-    prox_vec3 d = prox_v3_sub(x, k->c), across = prox_axis_across(d, k->w);
-    double rho = prox_v3_norm(across);
-    if (!(rho > 0.0)) return 0;
-    double h = 2.0 * k->hh, dr = k->r[1] - k->r[0];
-    double lam = ((prox_v3_dot(d, k->w) + k->hh) * h + (rho - k->r[0]) * dr) / (h * h + dr * dr);
-    int inside = lam > 0.0 && lam < 1.0;
-    lam = lam < 0.0 ? 0.0 : (lam > 1.0 ? 1.0 : lam);
-    *y = prox_v3_add(prox_v3_mad(k->c, -k->hh + h * lam, k->w), prox_v3_scale(across, (k->r[0] + dr * lam) / rho));
-    *n = prox_v3_add(prox_v3_scale(across, k->nu / rho), prox_v3_scale(k->w, k->nw));
-    return 1 + inside;
+    int foot = prox_cone_lateral_foot(&k->cone, prox_v3_sub(x, k->c), y, n);
+    *y = prox_v3_add(k->c, *y);
+    return foot;
 }
 
 /* Rim e of solid i against the other's lateral surface: Newton from the rim point extreme along g
@@ -236,9 +230,9 @@ static int lateral_foot(const rsol *k, prox_vec3 x, prox_vec3 *y, prox_vec3 *n)
 static void cand_rim_lat(rpq *q, int i, int e, prox_vec3 g)
 {
     const rsol *kj = &q->k[1 - i];
-    if (q->k[i].r[e] == 0.0) return;
+    if (rad(&q->k[i], e) == 0.0) return;
     prox_fcircle c = rim(&q->k[i], e);
-    prox_unit2 a = prox_circle_cone_local(&c, kj->c, kj->w, kj->k, prox_unit2_of(prox_v3_dot(g, c.u), prox_v3_dot(g, c.v)));
+    prox_unit2 a = prox_circle_cone_local(&c, kj->c, kj->cone.w, slope(kj), prox_unit2_of(prox_v3_dot(g, c.u), prox_v3_dot(g, c.v)));
     prox_vec3 x = prox_fcircle_at(&c, a), y, n;
     int foot = lateral_foot(kj, x, &y, &n);
     n = prox_v3_neg(n); /* into the lateral surface from outside */
@@ -248,9 +242,9 @@ static void cand_rim_lat(rpq *q, int i, int e, prox_vec3 g)
 /* The generator of k whose outward normal has the radial direction of d. */
 static void generator(const rsol *k, prox_vec3 d, prox_vec3 *p0, prox_vec3 *p1)
 {
-    prox_vec3 u = prox_v3_normalize(prox_axis_across(d, k->w));
-    *p0 = prox_v3_add(end_centre(k, 0), prox_v3_scale(u, k->r[0]));
-    *p1 = prox_v3_add(end_centre(k, 1), prox_v3_scale(u, k->r[1]));
+    prox_vec3 u = prox_v3_normalize(prox_axis_across(d, k->cone.w));
+    *p0 = prox_v3_add(end_centre(k, 0), prox_v3_scale(u, rad(k, 0)));
+    *p1 = prox_v3_add(end_centre(k, 1), prox_v3_scale(u, rad(k, 1)));
 }
 
 /* Lateral surface against lateral surface: the normals D from A to B with D.wA = nwA (A's lateral
@@ -259,14 +253,14 @@ static void generator(const rsol *k, prox_vec3 d, prox_vec3 *p0, prox_vec3 *p1)
 static void cand_lat_lat(rpq *q)
 {
     const rsol *A = &q->k[0], *B = &q->k[1];
-    prox_vec3 ab = prox_v3_cross(A->w, B->w);
-    double s2 = prox_v3_norm2(ab), c = prox_v3_dot(A->w, B->w);
+    prox_vec3 ab = prox_v3_cross(A->cone.w, B->cone.w);
+    double s2 = prox_v3_norm2(ab), c = prox_v3_dot(A->cone.w, B->cone.w);
     if (!(s2 > PROX_TOL_PARALLEL * PROX_TOL_PARALLEL)) return;
     double ta = A->nw, tb = -B->nw, al = (ta - tb * c) / s2, be = (tb - ta * c) / s2;
     double g2 = (1.0 - (al * al + be * be + 2.0 * al * be * c)) / s2;
     if (!(g2 >= 0.0)) return;
     for (int s = -1; s <= 1; s += 2) {
-        prox_vec3 D = prox_v3_add(prox_v3_add(prox_v3_scale(A->w, al), prox_v3_scale(B->w, be)), prox_v3_scale(ab, s * sqrt(g2)));
+        prox_vec3 D = prox_v3_add(prox_v3_add(prox_v3_scale(A->cone.w, al), prox_v3_scale(B->cone.w, be)), prox_v3_scale(ab, s * sqrt(g2)));
         prox_vec3 a0, a1, b0, b1, x, y;
         generator(A, D, &a0, &a1);
         generator(B, prox_v3_neg(D), &b0, &b1);

@@ -50,7 +50,6 @@
 #define CVX_GJK_IT 96      /* GJK iterations (polytopes finish in far fewer) */
 #define CVX_CIRCLE_SAMPLES 64
 #define CVX_GRAD_HALVINGS 8
-#define CVX_PHI_ROUND (16.0 * DBL_EPSILON) /* phi's rounding, in units of S: its terms are ~S each */
 
 #define CVX_LOCAL 0.05     /* radius (rad) of the local kink search around the best direction */
 #define CVX_NEAR 1e-5      /* a direction this close (rad) to a kink names it for the witnesses */
@@ -264,9 +263,10 @@ static void body_kinks(cvx *s, const prox_body *b, double sg)
     }
     case PROX_BODY_CONE: {
         const prox_cone *k = &b->x.cone;
-        double dr = k->r1 - k->r2, hy = prox_hypot2(dr, 2.0 * k->hh); /* the lateral normal: D.w / |P D| = (r1 - r2) / (2 hh) */
+        double nt, nr; /* the lateral normal: D.w / |P D| = (r1 - r2) / (2 hh) */
+        prox_cone_lateral_normal(k, &nt, &nr);
         add_kink(s, 0, k->w, 0), add_kink(s, 0, prox_v3_neg(k->w), 0);
-        add_kink_cs(s, 1, k->w, sg * dr / hy, 2.0 * k->hh / hy);
+        add_kink_cs(s, 1, k->w, sg * nt, nr);
         break;
     }
     case PROX_BODY_ECYL:
@@ -465,7 +465,7 @@ static prox_vec3 kinks_local(cvx *s, prox_vec3 d, double r)
     /* the lowest circle minimum (the root of phi's slope along its circle, to PROX_TOL_ANGLE) when it
      * ties the best direction to phi's rounding: the best by value is then rounding's pick among the
      * search's points near it, up to ~1e-8 rad off the optimum */
-    return fb <= s->best_phi + CVX_PHI_ROUND * s->S ? best : s->best_d;
+    return fb <= s->best_phi + PROX_TOL_PHI_ROUND * s->S ? best : s->best_d;
 }
 
 /* Every kink: points, the crossings of every two circles, every circle searched whole. */
@@ -497,7 +497,7 @@ static double newton_step(cvx *s, prox_vec3 *dp, double *fp, prox_vec3 *gp)
     if (a > 0.0 && det > 0.0) {
         x1 = -(c * g1 - b * g2) / det;
         x2 = -(a * g2 - b * g1) / det;
-        if (-0.5 * (g1 * x1 + g2 * x2) <= CVX_PHI_ROUND * s->S) {
+        if (-0.5 * (g1 * x1 + g2 * x2) <= PROX_TOL_PHI_ROUND * s->S) {
             /* the decrement within phi's rounding (phi ~ S, its support values ~ S): phi's values no
              * longer judge the step, and stopping here leaves the direction ~sqrt(rounding /
              * curvature) off (1e-8 rad: support points 1e-8 S off the closest pair). The step is
