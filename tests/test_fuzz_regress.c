@@ -953,6 +953,43 @@ static void test_fuzz_degenerate_aspect(void **state)
     assert_near(ba.distance, ab.distance, 1e-12 * 3);
 }
 
+/* fuzz/crashes/pairs-tiny-arb-huge-box-c20bd280: an ARB tetrahedron 1 across at the origin below a BOX
+ * 2e28 across whose top face, tilted by 1.4e-9 rad, lies 1.35e28 beneath it. In the polytope solver's
+ * frame (the pair's scale 1) the tetrahedron collapses to one point, and its faces' placed edges had
+ * length zero: the face test took the foot of the box's highest corner, 1.65e28 aside, as inside the
+ * face z = 0, and BOX-ARB answered, certified, 4.5e19 (1.8e-9 S) short with p2 that far off the ARB.
+ * The face test now takes its edge directions from the polytope's own frame. */
+static void test_fuzz_tiny_arb_huge_box(void **state)
+{
+    (void)state;
+    prox_arb t = {{prox_v3(0, 0, 0), prox_v3(1, 0, 0), prox_v3(6.2167845438435712e-317, 1, 0),
+                   prox_v3(0, 0, 1.000000001891749), prox_v3(0, 0, 0), prox_v3(0, 0, 0), prox_v3(0, 0, 0),
+                   prox_v3(0, 0, 0)},
+                  {1230, 1240, 1340, 2340, 0, 0}};
+    prox_vec3 c = prox_v3(1.7731057309979261e-307, 0, -1.3474687185424657e+28);
+    prox_vec3 e2 = prox_v3(1.8446746272732807e+19, -1.8446741874686296e+19, -1.3476555094338099e+28);
+    prox_box x = {c,
+                  {prox_v3(-1.3476555094338099e+28, -1.3476555094338099e+28, 4.2051705942806448e-270), e2,
+                   prox_v3(1.6505341735816776e+28, -1.6505341735816776e+28, 4.5185110396297912e+19)}};
+    prox_shape a = prox_shape_from_arb(t), b = prox_shape_from_box(x);
+    assert_int_equal(prox_shape_validate(&a), PROX_OK);
+    assert_int_equal(prox_shape_validate(&b), PROX_OK);
+    double S = prox_shape_pair_scale(&a, &b);
+    /* the distance is that of the origin (a corner of the ARB) to the top face's plane, within the
+     * ARB's size (1, 4e-29 S); the face's foot lies inside the face */
+    double want = fabs(prox_v3_dot(e2, c)) / prox_v3_norm(e2);
+    prox_distance_result ab = prox_shape_distance(&a, &b), ba = prox_shape_distance(&b, &a);
+    assert_int_equal(ab.status, PROX_OK);
+    assert_int_equal(ba.status, PROX_OK);
+    assert_true(fabs(ab.distance - want) <= 1e-12 * S);
+    assert_true(fabs(ba.distance - want) <= 1e-12 * S);
+    assert_true(prox_v3_norm(ab.p1) <= 2.0 && prox_v3_norm(ba.p2) <= 2.0); /* the ARB's witnesses on it */
+    prox_signed_result r = prox_shape_signed_distance(&b, &a);
+    assert_int_equal(r.status, PROX_OK);
+    assert_true(fabs(r.sd - want) <= 1e-12 * S);
+    assert_true(prox_v3_norm(r.p2) <= 2.0);
+}
+
 int main(void)
 {
     test_init();
@@ -967,6 +1004,7 @@ int main(void)
         cmocka_unit_test(test_fuzz_ell_subnormal_rho),
         cmocka_unit_test(test_fuzz_sph_rcc_subnormal_normal),
         cmocka_unit_test(test_fuzz_degenerate_aspect),
+        cmocka_unit_test(test_fuzz_tiny_arb_huge_box),
         cmocka_unit_test(test_fuzz_signed_witness_tiny_disk), cmocka_unit_test(test_fuzz_speck_rhp_disk),
         cmocka_unit_test(test_fuzz_rhp_needle_ell),
         cmocka_unit_test(test_fuzz_box_rcc_unit_normal),

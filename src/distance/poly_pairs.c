@@ -203,14 +203,17 @@ static double all_axes(const placed *A, const placed *B, int stop_positive, axes
 
 /* ---- disjoint: features ---- */
 
-/* Is the foot x (on face f's plane) inside the face polygon of P? */
+/* Is the foot x (on face f's plane) inside the face polygon of P? The edges' directions come from the
+ * polytope's own frame: a face far smaller than the pair (an ARB 1 across beside a box 1e28 across)
+ * collapses to one point when placed, and its placed edges, of length zero, would take any foot in. */
 static int in_face(const placed *P, int f, prox_vec3 x)
 {
     const prox_polytope *p = P->p;
     int m = p->fnv[f];
     for (int i = 0; i < m; ++i) {
-        prox_vec3 a = P->v[p->fv[f][i]], b = P->v[p->fv[f][i + 1 < m ? i + 1 : 0]];
-        if (prox_v3_dot(prox_v3_cross(prox_v3_sub(b, a), p->n[f]), prox_v3_sub(x, a)) > 0.0) return 0;
+        int ia = p->fv[f][i], ib = p->fv[f][i + 1 < m ? i + 1 : 0];
+        prox_vec3 w = prox_v3_cross(prox_v3_sub(p->v[ib], p->v[ia]), p->n[f]);
+        if (prox_v3_dot(w, prox_v3_sub(x, P->v[ia])) > 0.0) return 0;
     }
     return 1;
 }
