@@ -5,8 +5,8 @@
 #include <math.h>
 #include <string.h>
 
-#define EPA_MAXV 160
-#define EPA_MAXF 640
+#define EPA_MAXV 320  /* points: the engine's largest cap (CVX_EPA_POINTS_SMOOTH, convex.c) fits */
+#define EPA_MAXF 1280 /* faces: a closed mesh of n points has 2n - 4, with room for the fans in flight */
 
 typedef struct epa_face {
     int v[3];      /* corners, counter-clockwise seen from outside */
