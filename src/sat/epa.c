@@ -17,6 +17,7 @@ typedef struct epa_face {
     prox_vec3 n;   /* unit normal (flat: none) */
     double d;      /* n . v[0] */
     prox_vec3 u;   /* the unit direction of the face's point nearest the origin */
+    int edge;      /* the side (v[edge], v[edge + 1]) that point lies on when u is taken along it, else -1 */
 } epa_face;
 
 typedef struct epa {
@@ -41,8 +42,9 @@ static prox_vec3 seg_near(prox_vec3 a, prox_vec3 b)
 /* The point of triangle abc nearest the origin (approximately: it only chooses the direction of
  * the face's bound): the origin's foot on the plane when it lies inside, else the nearest of the
  * three sides. */
-static prox_vec3 tri_near(prox_vec3 a, prox_vec3 b, prox_vec3 c, prox_vec3 n, int flat)
+static prox_vec3 tri_near(prox_vec3 a, prox_vec3 b, prox_vec3 c, prox_vec3 n, int flat, int *edge)
 {
+    *edge = -1;
     if (!flat) {
         prox_vec3 p = prox_v3_scale(n, prox_v3_dot(n, a));
         prox_vec3 pa = prox_v3_sub(a, p), pb = prox_v3_sub(b, p), pc = prox_v3_sub(c, p);
@@ -54,6 +56,7 @@ static prox_vec3 tri_near(prox_vec3 a, prox_vec3 b, prox_vec3 c, prox_vec3 n, in
     int k = 0;
     for (int i = 1; i < 3; ++i)
         if (prox_v3_norm2(q[i]) < prox_v3_norm2(q[k])) k = i;
+    *edge = k;
     return q[k];
 }
 
@@ -75,15 +78,17 @@ static void face_plane(epa *E, int k)
     f->n = f->flat ? prox_v3(0, 0, 0) : prox_v3_scale(x, 1.0 / nx);
     f->d = prox_v3_dot(f->n, a);
     f->u = f->n;
+    f->edge = -1;
     double key = fmin(f->d, fmin(prox_v3_dot(f->n, b), prox_v3_dot(f->n, c))) - big;
     f->pos = !f->flat && f->d > 6.0 * DBL_EPSILON * la * (sqrt(prox_v3_norm2(e1) * prox_v3_norm2(e2)) / nx + 1.0);
     if (!f->pos || !(key > 1e3 * big)) {
-        prox_vec3 q = tri_near(a, b, c, f->n, f->flat);
+        int edge;
+        prox_vec3 q = tri_near(a, b, c, f->n, f->flat, &edge);
         double nq = prox_v3_norm(q);
         if (nq > 0.0) {
             prox_vec3 u = prox_v3_scale(q, 1.0 / nq);
             double m = fmin(prox_v3_dot(u, a), fmin(prox_v3_dot(u, b), prox_v3_dot(u, c))) - big;
-            if (f->flat || m > key) f->u = u, key = m;
+            if (f->flat || m > key) f->u = u, f->edge = edge, key = m;
         }
     }
     E->key[k] = key;
@@ -144,6 +149,10 @@ static int expand(epa *E, int f0, int iw)
     prox_vec3 w = E->p[iw];
     E->f[f0].live = 2; /* 2: seen in this step */
     stack[ns++] = f0;
+    /* a face bounded by its side nearest the origin keeps that bound while the side stays: the face
+     * across it goes too (else a fold whose side passes inside P's depth is rebuilt from w again) */
+    int across = E->f[f0].edge >= 0 ? E->f[f0].adj[E->f[f0].edge] : -1;
+    if (across >= 0 && E->f[across].live == 1) E->f[across].live = 2, stack[ns++] = across;
     while (ns > 0) {
         int i = stack[--ns];
         seen[nseen++] = i;

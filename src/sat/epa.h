@@ -11,8 +11,9 @@
  * or orientation of the triangles is needed, and each triangle's distance is bounded below by weak
  * duality (min over its corners of u . corner for a unit u), robust for slivers. Each step takes the
  * support point in the direction of the nearest triangle's nearest point and replaces that triangle
- * and those the point sees beyond their planes by a fan from it; near the deepest direction the
- * triangles shrink until their distances are within tol of h_P. */
+ * (with the one across its side when that point lies on the side) and those the point sees beyond
+ * their planes by a fan from it; near the deepest direction the triangles shrink until their
+ * distances are within tol of h_P. */
 #ifndef PROX_SAT_EPA_H
 #define PROX_SAT_EPA_H
 
