@@ -1687,6 +1687,7 @@ static double finish_overlap(cvx *s, prox_signed_result *r)
         prox_vec3 x = {0, 0, 0}, y = x;
         double e = witness_overlap(s, c[k], -f, &x, &y);
         if (e < best) best = e, r->sd = -f, r->normal = c[k], r->p1 = x, r->p2 = y;
+        if (best <= PROX_TOL_SEARCH * s->S) break; /* exact to rounding: no other candidate can matter */
     }
     double e0 = best, e;
     /* each witness replaced by its body's boundary point nearest p_other -+ sd n, in turn, while that
