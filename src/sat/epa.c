@@ -31,6 +31,20 @@ typedef struct epa {
     int nfree;
 } epa;
 
+/* The least and the largest of three finite values by comparison (fmin and fmax are library calls,
+ * which every new face paid four times). */
+static inline double min3(double x, double y, double z)
+{
+    double m = x < y ? x : y;
+    return m < z ? m : z;
+}
+
+static inline double max3(double x, double y, double z)
+{
+    double m = x > y ? x : y;
+    return m > z ? m : z;
+}
+
 /* The point of segment ab nearest the origin. */
 static prox_vec3 seg_near(prox_vec3 a, prox_vec3 b)
 {
@@ -73,13 +87,13 @@ static void face_plane(epa *E, int k)
     prox_vec3 a = E->p[f->v[0]], b = E->p[f->v[1]], c = E->p[f->v[2]];
     prox_vec3 e1 = prox_v3_sub(b, a), e2 = prox_v3_sub(c, a), x = prox_v3_cross(e1, e2);
     double nx = prox_v3_norm(x), la = sqrt(E->p2[f->v[0]]);
-    double big = 6.0 * DBL_EPSILON * sqrt(fmax(E->p2[f->v[0]], fmax(E->p2[f->v[1]], E->p2[f->v[2]])));
+    double big = 6.0 * DBL_EPSILON * sqrt(max3(E->p2[f->v[0]], E->p2[f->v[1]], E->p2[f->v[2]]));
     f->flat = !(nx > 0.0);
     f->n = f->flat ? prox_v3(0, 0, 0) : prox_v3_scale(x, 1.0 / nx);
     f->d = prox_v3_dot(f->n, a);
     f->u = f->n;
     f->edge = -1;
-    double key = fmin(f->d, fmin(prox_v3_dot(f->n, b), prox_v3_dot(f->n, c))) - big;
+    double key = min3(f->d, prox_v3_dot(f->n, b), prox_v3_dot(f->n, c)) - big;
     f->pos = !f->flat && f->d > 6.0 * DBL_EPSILON * la * (sqrt(prox_v3_norm2(e1) * prox_v3_norm2(e2)) / nx + 1.0);
     if (!f->pos || !(key > 1e3 * big)) {
         int edge;
@@ -87,7 +101,7 @@ static void face_plane(epa *E, int k)
         double nq = prox_v3_norm(q);
         if (nq > 0.0) {
             prox_vec3 u = prox_v3_scale(q, 1.0 / nq);
-            double m = fmin(prox_v3_dot(u, a), fmin(prox_v3_dot(u, b), prox_v3_dot(u, c))) - big;
+            double m = min3(prox_v3_dot(u, a), prox_v3_dot(u, b), prox_v3_dot(u, c)) - big;
             if (f->flat || m > key) f->u = u, f->edge = edge, key = m;
         }
     }
