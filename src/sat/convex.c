@@ -65,8 +65,8 @@
 #define CVX_EPA_POINTS_SMOOTH 300 /* the same for a pair without kinks, whose polytope is built only
                                    * when the tangent balls fail (a deep overlap) and whose triangles
                                    * must shrink over a curved patch until its sag is within the
-                                   * proof's 1e-10 S: at 140 points 18 of the 727 overlapping mix
-                                   * ELL-ELL pairs were left to the cover, none at 300; kinked pairs
+                                   * proof's 1e-10 S: at 140 points 18 of 727 overlapping ELL-ELL
+                                   * pairs of the bench's mix generator were left to the cover, none at 300; kinked pairs
                                    * stalled there gain nothing from more points */
 #define CVX_EPA_LOCAL 1e-3 /* radius (rad) of the kink search around the polytope's deepest direction,
                             * which its proof puts ~1e-5 rad from the optimum (within 1e-10 S of it) */
