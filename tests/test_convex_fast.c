@@ -8,7 +8,8 @@
  * lower bound within PROX_TOL_CERT S of it. The early exits must be taken for most disjoint pairs.
  * The signed query likewise (prox_convex_signed_full: no early exit, the depth proved by the cover),
  * whose overlaps the quick search proves (an inner polytope of A - B, epa.h, or tangent balls at the
- * witnesses): each proven lower bound must stay below the other search's depth. */
+ * witnesses): each proven lower bound must stay below the other search's depth. A cone overlapping a
+ * box on which the inner polytope once stalled must be proved without the cover. */
 #include "test_util.h"
 
 #include <float.h>
@@ -267,6 +268,37 @@ static void test_smooth_witness_reference(void **state)
     assert_true(ef <= 1e-14 && eq <= 1e-14);
 }
 
+/* A cone (a TRC whose top radius is 0) overlapping a box 2.26 deep. The quick search's inner polytope
+ * once stalled here: its nearest triangle was bounded by a side passing 0.13 from the origin, and the
+ * fan from each new support point kept that side, so the same bound came back until the point budget
+ * ran out and the cover (the global search) had to prove the depth. The triangle across that side now
+ * goes with it: the quick search must prove the depth, equal to the cover's within the bar. */
+static void test_signed_cone_box_quick(void **state)
+{
+    (void)state;
+    prox_shape a = prox_shape_from_trc((prox_trc){{4.1156162303954975, 0.8878579411085139, 0.7091756409110217},
+                                                  {-8.231232460790995, -1.7757158822170278, -1.4183512818220434},
+                                                  2.7616003340814923, 0.0});
+    prox_shape b = prox_shape_from_box((prox_box){{5.8457437491264566, -0.20850486275721702, -0.40812611834270707},
+                                                  {{-0.29226235478420698, 0.075080397046360853, -1.3741444575193742},
+                                                   {-8.0232898754669737, -3.2391095834234767, 1.5294694433467328},
+                                                   {-1.0031057539728445, 2.6539069977712662, 0.3583512913623414}}});
+    assert_int_equal(prox_shape_validate(&a), PROX_OK);
+    assert_int_equal(prox_shape_validate(&b), PROX_OK);
+    prox_body ba = prox_body_make(&a), bb = prox_body_make(&b);
+    double S = prox_shape_pair_scale(&a, &b);
+    prox_convex_info fi, gi;
+    prox_signed_result f = prox_convex_signed_ex(&ba, &bb, &fi), g = prox_convex_signed_full(&ba, &bb, &gi);
+    assert_int_equal(f.status, PROX_OK);
+    assert_int_equal(g.status, PROX_OK);
+    assert_int_equal(fi.global, 0); /* proved by the quick search */
+    assert_true(fi.certified && gi.certified);
+    assert_true(f.sd < -2.0);
+    assert_true(fabs(f.sd - g.sd) <= PROX_TOL_DEPTH_BAR * S);
+    assert_true(fi.lower <= -g.sd + PROX_TOL_DEPTH_BAR * S); /* each proof on the other answer's side */
+    assert_true(gi.lower <= -f.sd + PROX_TOL_DEPTH_BAR * S);
+}
+
 int main(void)
 {
     test_init();
@@ -279,6 +311,7 @@ int main(void)
         cmocka_unit_test(test_signed_near),
         cmocka_unit_test(test_signed_shallow),
         cmocka_unit_test(test_smooth_witness_reference),
+        cmocka_unit_test(test_signed_cone_box_quick),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
