@@ -9,7 +9,8 @@
  * The signed query likewise (prox_convex_signed_full: no early exit, the depth proved by the cover),
  * whose overlaps the quick search proves (an inner polytope of A - B, epa.h, or tangent balls at the
  * witnesses): each proven lower bound must stay below the other search's depth. A cone overlapping a
- * box on which the inner polytope once stalled must be proved without the cover. */
+ * box on which the inner polytope once stalled, and two deeply overlapping ellipsoids, must be proved
+ * without the cover. */
 #include "test_util.h"
 
 #include <float.h>
@@ -299,6 +300,34 @@ static void test_signed_cone_box_quick(void **state)
     assert_true(gi.lower <= -f.sd + PROX_TOL_DEPTH_BAR * S);
 }
 
+/* Two ellipsoids 4.37 deep, their centres 0.8 apart. No ball of that radius fits at their witnesses,
+ * so the inner polytope proves the depth, its triangles shrinking over the curved patch until their
+ * sag is within the proof's 1e-10 S: that needs more than 140 support points, the budget of a kinked
+ * pair, after which the cover (the global search) had to prove it. A pair without kinks may take 300:
+ * the quick search must prove the depth, equal to the cover's within the bar. */
+static void test_signed_deep_ellipsoids_quick(void **state)
+{
+    (void)state;
+    prox_shape a = prox_shape_from_ell((prox_ell){{0, 0, 0}, {-0.44367351733321675, -2.6066696263702784, -0.52083466175701165}, 3.1087779404156204});
+    prox_shape b = prox_shape_from_ell((prox_ell){{-0.69342827264032936, -0.29131422203628976, 0.34463023937756698},
+                                                  {-1.682209355841674, -3.1342140956643902, -0.26039884837141469},
+                                                  1.9280693604295682});
+    assert_int_equal(prox_shape_validate(&a), PROX_OK);
+    assert_int_equal(prox_shape_validate(&b), PROX_OK);
+    prox_body ba = prox_body_make(&a), bb = prox_body_make(&b);
+    double S = prox_shape_pair_scale(&a, &b);
+    prox_convex_info fi, gi;
+    prox_signed_result f = prox_convex_signed_ex(&ba, &bb, &fi), g = prox_convex_signed_full(&ba, &bb, &gi);
+    assert_int_equal(f.status, PROX_OK);
+    assert_int_equal(g.status, PROX_OK);
+    assert_int_equal(fi.global, 0); /* proved by the quick search */
+    assert_true(fi.certified && gi.certified);
+    assert_true(f.sd < -4.0);
+    assert_true(fabs(f.sd - g.sd) <= PROX_TOL_DEPTH_BAR * S);
+    assert_true(fi.lower <= -g.sd + PROX_TOL_DEPTH_BAR * S);
+    assert_true(gi.lower <= -f.sd + PROX_TOL_DEPTH_BAR * S);
+}
+
 int main(void)
 {
     test_init();
@@ -312,6 +341,7 @@ int main(void)
         cmocka_unit_test(test_signed_shallow),
         cmocka_unit_test(test_smooth_witness_reference),
         cmocka_unit_test(test_signed_cone_box_quick),
+        cmocka_unit_test(test_signed_deep_ellipsoids_quick),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
