@@ -41,7 +41,6 @@
 #include "core/tol.h"
 
 #include <float.h>
-#include <stdio.h>
 #include <stdatomic.h>
 #include <stddef.h>
 #include <string.h>
@@ -1612,9 +1611,6 @@ static int depth_quick(cvx *s, const gjk_out *go, prox_signed_result *r, prox_co
         finish_overlap(s, r);
         epa = 1;
     }
-#ifdef PROX_DQ_DEBUG
-    if (!epa) fprintf(stderr, "quick fails: nk %d best %.6e\n", s->nk, s->best_phi);
-#endif
     if (!epa) return 0;
     /* the bound holds for the best found since (which is no larger) */
     info->lower = fmin(lower, s->best_phi);
