@@ -9,8 +9,8 @@
  * The signed query likewise (prox_convex_signed_full: no early exit, the depth proved by the cover),
  * whose overlaps the quick search proves (an inner polytope of A - B, epa.h, or tangent balls at the
  * witnesses): each proven lower bound must stay below the other search's depth. A cone overlapping a
- * box on which the inner polytope once stalled, and two deeply overlapping ellipsoids, must be proved
- * without the cover. */
+ * box on which the inner polytope once stalled, two deeply overlapping ellipsoids and a cone against a
+ * cylinder whose first polytope stalls must be proved without the cover. */
 #include "test_util.h"
 
 #include <float.h>
@@ -328,6 +328,35 @@ static void test_signed_deep_ellipsoids_quick(void **state)
     assert_true(gi.lower <= -f.sd + PROX_TOL_DEPTH_BAR * S);
 }
 
+/* A cone (a TRC whose top radius is 0) overlapping a cylinder 1.35 deep. The inner polytope built
+ * from the icosahedron stalls on this pair before its bound reaches the depth; a second one, from the
+ * icosahedron turned to the best direction, proves it: the quick search must prove it
+ * without the cover, equal to the cover's within the bar. */
+static void test_signed_cone_cylinder_turned(void **state)
+{
+    (void)state;
+    prox_shape a = prox_shape_from_trc((prox_trc){{-3.0578884529373007, 2.2421649216194894, -3.0139786289348738},
+                                                  {6.1157769058746014, -4.4843298432389789, 6.0279572578697476},
+                                                  4.6780937539325969, 0.0});
+    prox_shape b = prox_shape_from_rcc((prox_rcc){{0.67958150550933705, 0.0071257036235869986, 1.4418447920164907},
+                                                  {-2.4912530166407785, -2.7904352414363691, 6.4876215803204547},
+                                                  2.6509019858029998});
+    assert_int_equal(prox_shape_validate(&a), PROX_OK);
+    assert_int_equal(prox_shape_validate(&b), PROX_OK);
+    prox_body ba = prox_body_make(&a), bb = prox_body_make(&b);
+    double S = prox_shape_pair_scale(&a, &b);
+    prox_convex_info fi, gi;
+    prox_signed_result f = prox_convex_signed_ex(&ba, &bb, &fi), g = prox_convex_signed_full(&ba, &bb, &gi);
+    assert_int_equal(f.status, PROX_OK);
+    assert_int_equal(g.status, PROX_OK);
+    assert_int_equal(fi.global, 0); /* proved by the quick search */
+    assert_true(fi.certified && gi.certified);
+    assert_true(f.sd < -1.0);
+    assert_true(fabs(f.sd - g.sd) <= PROX_TOL_DEPTH_BAR * S);
+    assert_true(fi.lower <= -g.sd + PROX_TOL_DEPTH_BAR * S);
+    assert_true(gi.lower <= -f.sd + PROX_TOL_DEPTH_BAR * S);
+}
+
 int main(void)
 {
     test_init();
@@ -342,6 +371,7 @@ int main(void)
         cmocka_unit_test(test_smooth_witness_reference),
         cmocka_unit_test(test_signed_cone_box_quick),
         cmocka_unit_test(test_signed_deep_ellipsoids_quick),
+        cmocka_unit_test(test_signed_cone_cylinder_turned),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1559,14 +1559,25 @@ static prox_vec3 epa_support(void *ctx, prox_vec3 d, double *h)
 }
 
 /* An inner polytope of P, refined towards the deepest direction until its nearest triangle proves
- * the best depth found (epa.h); *lower the bound. It starts from the icosahedron's support points;
- * when their mesh folds about the origin (a thin P with the origin near its rim), from GJK's final
- * tetrahedron, which encloses the origin. */
-static int epa_proves(cvx *s, const gjk_out *go, double *lower)
+ * the best depth found (epa.h); *lower the bound. It starts from the icosahedron's support points
+ * (the icosahedron turned to put a vertex at *pole when pole is given); when their mesh folds about
+ * the origin (a thin P with the origin near its rim), from GJK's final tetrahedron, which encloses
+ * the origin. */
+/* The icosahedron's vertex i turned so that vertex 0 lies along the unit pole (a rotation: both
+ * frames are right-handed, so the triangles keep their orientation). */
+static prox_vec3 ico_turned(int i, prox_vec3 pole)
+{
+    prox_vec3 v0 = ico_vertex(0), a0 = prox_v3_any_perp(v0), b0 = prox_v3_cross(v0, a0);
+    prox_vec3 a1 = prox_v3_any_perp(pole), b1 = prox_v3_cross(pole, a1), x = ico_vertex(i);
+    return prox_v3_add(prox_v3_add(prox_v3_scale(a1, prox_v3_dot(x, a0)), prox_v3_scale(b1, prox_v3_dot(x, b0))),
+                       prox_v3_scale(pole, prox_v3_dot(x, v0)));
+}
+
+static int epa_proves_at(cvx *s, const gjk_out *go, const prox_vec3 *pole, double *lower)
 {
     static const unsigned char tet[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
     prox_vec3 g[12];
-    for (int i = 0; i < 12; ++i) g[i] = phi_grad(s, ico_vertex(i));
+    for (int i = 0; i < 12; ++i) g[i] = phi_grad(s, pole ? ico_turned(i, *pole) : ico_vertex(i));
     prox_epa_result e;
     int cap = s->nk == 0 ? CVX_EPA_POINTS_SMOOTH : CVX_EPA_POINTS;
     double tol = PROX_TOL_DEPTH_CERT * s->S, slack = PROX_TOL_PHI_ROUND * s->S;
@@ -1580,6 +1591,8 @@ static int epa_proves(cvx *s, const gjk_out *go, double *lower)
     *lower = e.lower;
     return ok;
 }
+
+static int epa_proves(cvx *s, const gjk_out *go, double *lower) { return epa_proves_at(s, go, NULL, lower); }
 
 /* The depth without the global search, from the best of the centre line and the icosahedron's
  * vertices: Newton and the local kinks give the answer, proved by the tangent balls at its
@@ -1607,6 +1620,15 @@ static int depth_quick(cvx *s, const gjk_out *go, prox_signed_result *r, prox_co
     }
     if (!epa && ball_certified(s, r, info)) return 1;
     if (!epa && s->nk == 0 && epa_proves(s, go, &lower)) { /* its support points may have found a deeper one */
+        descend_best(s);
+        finish_overlap(s, r);
+        epa = 1;
+    }
+    /* a kinked pair whose polytope stalled (a rim of the fan pinched at a corner, a fold it could
+     * not leave) tries once more from the icosahedron turned to the best direction, which starts a
+     * different mesh with a support point at the deepest direction already: most such pairs are
+     * then proved without the cover */
+    if (!epa && s->nk > 0 && epa_proves_at(s, go, &s->best_d, &lower)) {
         descend_best(s);
         finish_overlap(s, r);
         epa = 1;
