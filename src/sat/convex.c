@@ -67,6 +67,7 @@
                                    * proof's 1e-10 S: at 140 points 18 of 727 overlapping ELL-ELL
                                    * pairs of the bench's mix generator were left to the cover, none at 300; kinked pairs
                                    * stalled there gain nothing from more points */
+#define CVX_EPA_TURNS 2     /* polytopes a kinked pair may build from the turned icosahedron (depth_quick) */
 #define CVX_EPA_LOCAL 1e-3 /* radius (rad) of the kink search around the polytope's deepest direction,
                             * which its proof puts ~1e-5 rad from the optimum (within 1e-10 S of it) */
 
@@ -1563,21 +1564,22 @@ static prox_vec3 epa_support(void *ctx, prox_vec3 d, double *h)
  * (the icosahedron turned to put a vertex at *pole when pole is given); when their mesh folds about
  * the origin (a thin P with the origin near its rim), from GJK's final tetrahedron, which encloses
  * the origin. */
-/* The icosahedron's vertex i turned so that vertex 0 lies along the unit pole (a rotation: both
- * frames are right-handed, so the triangles keep their orientation). */
-static prox_vec3 ico_turned(int i, prox_vec3 pole)
+/* The icosahedron's vertex i turned so that vertex 0 lies along the unit pole and then by the angle
+ * twist about it (a rotation: both frames are right-handed, so the triangles keep their orientation). */
+static prox_vec3 ico_turned(int i, prox_vec3 pole, double twist)
 {
     prox_vec3 v0 = ico_vertex(0), a0 = prox_v3_any_perp(v0), b0 = prox_v3_cross(v0, a0);
-    prox_vec3 a1 = prox_v3_any_perp(pole), b1 = prox_v3_cross(pole, a1), x = ico_vertex(i);
+    prox_vec3 p = prox_v3_any_perp(pole), q = prox_v3_cross(pole, p), x = ico_vertex(i);
+    prox_vec3 a1 = prox_v3_add(prox_v3_scale(p, cos(twist)), prox_v3_scale(q, sin(twist))), b1 = prox_v3_cross(pole, a1);
     return prox_v3_add(prox_v3_add(prox_v3_scale(a1, prox_v3_dot(x, a0)), prox_v3_scale(b1, prox_v3_dot(x, b0))),
                        prox_v3_scale(pole, prox_v3_dot(x, v0)));
 }
 
-static int epa_proves_at(cvx *s, const gjk_out *go, const prox_vec3 *pole, double *lower)
+static int epa_proves_at(cvx *s, const gjk_out *go, const prox_vec3 *pole, double twist, double *lower)
 {
     static const unsigned char tet[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
     prox_vec3 g[12];
-    for (int i = 0; i < 12; ++i) g[i] = phi_grad(s, pole ? ico_turned(i, *pole) : ico_vertex(i));
+    for (int i = 0; i < 12; ++i) g[i] = phi_grad(s, pole ? ico_turned(i, *pole, twist) : ico_vertex(i));
     prox_epa_result e;
     int cap = s->nk == 0 ? CVX_EPA_POINTS_SMOOTH : CVX_EPA_POINTS;
     double tol = PROX_TOL_DEPTH_CERT * s->S, slack = PROX_TOL_PHI_ROUND * s->S;
@@ -1592,7 +1594,7 @@ static int epa_proves_at(cvx *s, const gjk_out *go, const prox_vec3 *pole, doubl
     return ok;
 }
 
-static int epa_proves(cvx *s, const gjk_out *go, double *lower) { return epa_proves_at(s, go, NULL, lower); }
+static int epa_proves(cvx *s, const gjk_out *go, double *lower) { return epa_proves_at(s, go, NULL, 0.0, lower); }
 
 /* The depth without the global search, from the best of the centre line and the icosahedron's
  * vertices: Newton and the local kinks give the answer, proved by the tangent balls at its
@@ -1625,10 +1627,12 @@ static int depth_quick(cvx *s, const gjk_out *go, prox_signed_result *r, prox_co
         epa = 1;
     }
     /* a kinked pair whose polytope stalled (a rim of the fan pinched at a corner, a fold it could
-     * not leave) tries once more from the icosahedron turned to the best direction, which starts a
-     * different mesh with a support point at the deepest direction already: most such pairs are
-     * then proved without the cover */
-    if (!epa && s->nk > 0 && epa_proves_at(s, go, &s->best_d, &lower)) {
+     * not leave) tries again from the icosahedron turned to the best direction, which starts a
+     * different mesh with a support point at the deepest direction already, then from that one
+     * twisted about it by pi/5 (half the turn that maps the icosahedron onto itself about a vertex):
+     * nearly every such pair is then proved without the cover */
+    for (int k = 0; !epa && s->nk > 0 && k < CVX_EPA_TURNS; ++k) {
+        if (!epa_proves_at(s, go, &s->best_d, k * (PROX_PI / 5.0), &lower)) continue;
         descend_best(s);
         finish_overlap(s, r);
         epa = 1;
