@@ -22,7 +22,7 @@ typedef struct epa_face {
 
 typedef struct epa {
     prox_vec3 p[EPA_MAXV];
-    double p2[EPA_MAXV]; /* |p|^2 */
+    double pn[EPA_MAXV]; /* |p|, once per point (every face at it reads it) */
     int np;
     epa_face f[EPA_MAXF];
     double key[EPA_MAXF]; /* proven: every point of face f is at least key[f] from the origin (INFINITY: gone) */
@@ -86,8 +86,8 @@ static void face_plane(epa *E, int k)
     epa_face *f = &E->f[k];
     prox_vec3 a = E->p[f->v[0]], b = E->p[f->v[1]], c = E->p[f->v[2]];
     prox_vec3 e1 = prox_v3_sub(b, a), e2 = prox_v3_sub(c, a), x = prox_v3_cross(e1, e2);
-    double nx = prox_v3_norm(x), la = sqrt(E->p2[f->v[0]]);
-    double big = 6.0 * DBL_EPSILON * sqrt(max3(E->p2[f->v[0]], E->p2[f->v[1]], E->p2[f->v[2]]));
+    double nx = prox_v3_norm(x), la = E->pn[f->v[0]];
+    double big = 6.0 * DBL_EPSILON * max3(la, E->pn[f->v[1]], E->pn[f->v[2]]);
     f->flat = !(nx > 0.0);
     f->n = f->flat ? prox_v3(0, 0, 0) : prox_v3_scale(x, 1.0 / nx);
     f->d = prox_v3_dot(f->n, a);
@@ -228,7 +228,7 @@ static int covers(const epa *E)
         const epa_face *f = &E->f[i];
         if (!f->live) continue;
         prox_vec3 a = E->p[f->v[0]], b = E->p[f->v[1]], c = E->p[f->v[2]];
-        double la = sqrt(E->p2[f->v[0]]), lb = sqrt(E->p2[f->v[1]]), lc = sqrt(E->p2[f->v[2]]);
+        double la = E->pn[f->v[0]], lb = E->pn[f->v[1]], lc = E->pn[f->v[2]];
         double num = prox_v3_dot(a, prox_v3_cross(b, c));
         double den = la * lb * lc + prox_v3_dot(a, b) * lc + prox_v3_dot(a, c) * lb + prox_v3_dot(b, c) * la;
         sum += 2.0 * atan2(num, den);
@@ -252,7 +252,7 @@ int prox_epa_depth(prox_epa_support fs, void *ctx, const prox_vec3 *v, int nv, c
     E.np = nv, E.nf = 0, E.nfree = 0;
     out->lower = -INFINITY, out->upper = upper, out->dir = dir, out->points = nv;
     if (nv > 12 || nt > 20) return 0;
-    for (int i = 0; i < nv; ++i) E.p[i] = v[i], E.p2[i] = prox_v3_norm2(v[i]);
+    for (int i = 0; i < nv; ++i) E.p[i] = v[i], E.pn[i] = prox_v3_norm(v[i]);
     for (int t = 0; t < nt; ++t) face_new(&E, tri[t][0], tri[t][1], tri[t][2]);
     if (!link_all(&E) || !covers(&E)) { out->points = 0; return 0; } /* folded about the origin */
     if (max_points > EPA_MAXV) max_points = EPA_MAXV;
@@ -269,7 +269,7 @@ int prox_epa_depth(prox_epa_support fs, void *ctx, const prox_vec3 *v, int nv, c
         if (h < out->upper) out->upper = h, out->dir = u;
         if (out->lower >= out->upper - tol) return proved(&E, out, tol);
         if (!(prox_v3_dot(u, w) > E.key[i] + slack) || !prox_v3_isfinite(w)) break; /* no point beyond it */
-        E.p[E.np] = w, E.p2[E.np] = prox_v3_norm2(w);
+        E.p[E.np] = w, E.pn[E.np] = prox_v3_norm(w);
         if (!expand(&E, i, E.np++)) break;
         out->points = E.np;
     }
