@@ -476,7 +476,10 @@ prox_vec3 prox_polytope_make(const prox_shape *s, prox_polytope *p)
 double prox_polytope_hc(const prox_polytope *p, prox_vec3 d)
 {
     double m = prox_v3_dot(d, p->v[0]);
-    for (int i = 1; i < p->nv; ++i) m = fmax(m, prox_v3_dot(d, p->v[i]));
+    for (int i = 1; i < p->nv; ++i) { /* by comparison: fmax is a library call, once a corner */
+        double t = prox_v3_dot(d, p->v[i]);
+        if (t > m) m = t;
+    }
     return m;
 }
 
