@@ -269,6 +269,26 @@ static void test_smooth_witness_reference(void **state)
     assert_true(ef <= 1e-14 && eq <= 1e-14);
 }
 
+/* An overlapping pair whose depth the quick search must prove without the cover (the global search),
+ * deeper than -sd_max, and equal to the cover's within the bar, each proof on the other answer's side. */
+static void check_quick_proof(const prox_shape *a, const prox_shape *b, double sd_max)
+{
+    assert_int_equal(prox_shape_validate(a), PROX_OK);
+    assert_int_equal(prox_shape_validate(b), PROX_OK);
+    prox_body ba = prox_body_make(a), bb = prox_body_make(b);
+    double S = prox_shape_pair_scale(a, b);
+    prox_convex_info fi, gi;
+    prox_signed_result f = prox_convex_signed_ex(&ba, &bb, &fi), g = prox_convex_signed_full(&ba, &bb, &gi);
+    assert_int_equal(f.status, PROX_OK);
+    assert_int_equal(g.status, PROX_OK);
+    assert_int_equal(fi.global, 0); /* proved by the quick search */
+    assert_true(fi.certified && gi.certified);
+    assert_true(f.sd < sd_max);
+    assert_true(fabs(f.sd - g.sd) <= PROX_TOL_DEPTH_BAR * S);
+    assert_true(fi.lower <= -g.sd + PROX_TOL_DEPTH_BAR * S);
+    assert_true(gi.lower <= -f.sd + PROX_TOL_DEPTH_BAR * S);
+}
+
 /* A cone (a TRC whose top radius is 0) overlapping a box 2.26 deep. The quick search's inner polytope
  * once stalled here: its nearest triangle was bounded by a side passing 0.13 from the origin, and the
  * fan from each new support point kept that side, so the same bound came back until the point budget
@@ -284,20 +304,7 @@ static void test_signed_cone_box_quick(void **state)
                                                   {{-0.29226235478420698, 0.075080397046360853, -1.3741444575193742},
                                                    {-8.0232898754669737, -3.2391095834234767, 1.5294694433467328},
                                                    {-1.0031057539728445, 2.6539069977712662, 0.3583512913623414}}});
-    assert_int_equal(prox_shape_validate(&a), PROX_OK);
-    assert_int_equal(prox_shape_validate(&b), PROX_OK);
-    prox_body ba = prox_body_make(&a), bb = prox_body_make(&b);
-    double S = prox_shape_pair_scale(&a, &b);
-    prox_convex_info fi, gi;
-    prox_signed_result f = prox_convex_signed_ex(&ba, &bb, &fi), g = prox_convex_signed_full(&ba, &bb, &gi);
-    assert_int_equal(f.status, PROX_OK);
-    assert_int_equal(g.status, PROX_OK);
-    assert_int_equal(fi.global, 0); /* proved by the quick search */
-    assert_true(fi.certified && gi.certified);
-    assert_true(f.sd < -2.0);
-    assert_true(fabs(f.sd - g.sd) <= PROX_TOL_DEPTH_BAR * S);
-    assert_true(fi.lower <= -g.sd + PROX_TOL_DEPTH_BAR * S); /* each proof on the other answer's side */
-    assert_true(gi.lower <= -f.sd + PROX_TOL_DEPTH_BAR * S);
+    check_quick_proof(&a, &b, -2.0);
 }
 
 /* Two ellipsoids 4.37 deep, their centres 0.8 apart. No ball of that radius fits at their witnesses,
@@ -312,20 +319,7 @@ static void test_signed_deep_ellipsoids_quick(void **state)
     prox_shape b = prox_shape_from_ell((prox_ell){{-0.69342827264032936, -0.29131422203628976, 0.34463023937756698},
                                                   {-1.682209355841674, -3.1342140956643902, -0.26039884837141469},
                                                   1.9280693604295682});
-    assert_int_equal(prox_shape_validate(&a), PROX_OK);
-    assert_int_equal(prox_shape_validate(&b), PROX_OK);
-    prox_body ba = prox_body_make(&a), bb = prox_body_make(&b);
-    double S = prox_shape_pair_scale(&a, &b);
-    prox_convex_info fi, gi;
-    prox_signed_result f = prox_convex_signed_ex(&ba, &bb, &fi), g = prox_convex_signed_full(&ba, &bb, &gi);
-    assert_int_equal(f.status, PROX_OK);
-    assert_int_equal(g.status, PROX_OK);
-    assert_int_equal(fi.global, 0); /* proved by the quick search */
-    assert_true(fi.certified && gi.certified);
-    assert_true(f.sd < -4.0);
-    assert_true(fabs(f.sd - g.sd) <= PROX_TOL_DEPTH_BAR * S);
-    assert_true(fi.lower <= -g.sd + PROX_TOL_DEPTH_BAR * S);
-    assert_true(gi.lower <= -f.sd + PROX_TOL_DEPTH_BAR * S);
+    check_quick_proof(&a, &b, -4.0);
 }
 
 /* A cone (a TRC whose top radius is 0) overlapping a cylinder 1.35 deep. The inner polytope built
@@ -341,20 +335,7 @@ static void test_signed_cone_cylinder_turned(void **state)
     prox_shape b = prox_shape_from_rcc((prox_rcc){{0.67958150550933705, 0.0071257036235869986, 1.4418447920164907},
                                                   {-2.4912530166407785, -2.7904352414363691, 6.4876215803204547},
                                                   2.6509019858029998});
-    assert_int_equal(prox_shape_validate(&a), PROX_OK);
-    assert_int_equal(prox_shape_validate(&b), PROX_OK);
-    prox_body ba = prox_body_make(&a), bb = prox_body_make(&b);
-    double S = prox_shape_pair_scale(&a, &b);
-    prox_convex_info fi, gi;
-    prox_signed_result f = prox_convex_signed_ex(&ba, &bb, &fi), g = prox_convex_signed_full(&ba, &bb, &gi);
-    assert_int_equal(f.status, PROX_OK);
-    assert_int_equal(g.status, PROX_OK);
-    assert_int_equal(fi.global, 0); /* proved by the quick search */
-    assert_true(fi.certified && gi.certified);
-    assert_true(f.sd < -1.0);
-    assert_true(fabs(f.sd - g.sd) <= PROX_TOL_DEPTH_BAR * S);
-    assert_true(fi.lower <= -g.sd + PROX_TOL_DEPTH_BAR * S);
-    assert_true(gi.lower <= -f.sd + PROX_TOL_DEPTH_BAR * S);
+    check_quick_proof(&a, &b, -1.0);
 }
 
 int main(void)
