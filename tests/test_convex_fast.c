@@ -9,8 +9,9 @@
  * The signed query likewise (prox_convex_signed_full: no early exit, the depth proved by the cover),
  * whose overlaps the quick search proves (an inner polytope of A - B, epa.h, or tangent balls at the
  * witnesses): each proven lower bound must stay below the other search's depth. A cone overlapping a
- * box on which the inner polytope once stalled, two deeply overlapping ellipsoids and a cone against a
- * cylinder whose first polytope stalls must be proved without the cover. */
+ * box on which the inner polytope once stalled, two deeply overlapping ellipsoids, a cone against a
+ * cylinder whose first polytope stalls and two cones whose first two stall must be proved without the
+ * cover. */
 #include "test_util.h"
 
 #include <float.h>
@@ -338,6 +339,22 @@ static void test_signed_cone_cylinder_turned(void **state)
     check_quick_proof(&a, &b, -1.0);
 }
 
+/* Two cones (TRCs whose top radii are 0) overlapping 3.92 deep. The inner polytope from the
+ * icosahedron stalls on this pair, and so does the one turned to put a vertex at the best direction;
+ * the third, twisted by pi/5 about that vertex, proves the depth: the quick search must prove it
+ * without the cover, equal to the cover's within the bar. */
+static void test_signed_cones_twisted(void **state)
+{
+    (void)state;
+    prox_shape a = prox_shape_from_trc((prox_trc){{-0.20482612394085981, -0.33003910488742094, 1.0297976979798389},
+                                                  {0.40965224788171961, 0.66007820977484188, -2.0595953959596778},
+                                                  2.7906197441980449, 0.0});
+    prox_shape b = prox_shape_from_trc((prox_trc){{-2.1036012593753797, -3.2271676649378271, 0.099488325070228978},
+                                                  {-1.8209231377391462, 6.9294808208632963, -3.3189240078511948},
+                                                  7.0870681991298037, 0.0});
+    check_quick_proof(&a, &b, -3.0);
+}
+
 int main(void)
 {
     test_init();
@@ -353,6 +370,7 @@ int main(void)
         cmocka_unit_test(test_signed_cone_box_quick),
         cmocka_unit_test(test_signed_deep_ellipsoids_quick),
         cmocka_unit_test(test_signed_cone_cylinder_turned),
+        cmocka_unit_test(test_signed_cones_twisted),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
