@@ -65,8 +65,8 @@
                                    * when the tangent balls fail (a deep overlap) and whose triangles
                                    * must shrink over a curved patch until its sag is within the
                                    * proof's 1e-10 S: at 140 points 18 of 727 overlapping ELL-ELL
-                                   * pairs of the bench's mix generator were left to the cover, none at 300; kinked pairs
-                                   * stalled there gain nothing from more points */
+                                   * pairs of the bench's mix generator were left to the cover, none
+                                   * at 300; kinked pairs stalled there gain nothing from more */
 #define CVX_EPA_TURNS 2     /* polytopes a kinked pair may build from the turned icosahedron (depth_quick) */
 #define CVX_EPA_LOCAL 1e-3 /* radius (rad) of the kink search around the polytope's deepest direction,
                             * which its proof puts ~1e-5 rad from the optimum (within 1e-10 S of it) */
@@ -1559,22 +1559,23 @@ static prox_vec3 epa_support(void *ctx, prox_vec3 d, double *h)
     return g;
 }
 
-/* An inner polytope of P, refined towards the deepest direction until its nearest triangle proves
- * the best depth found (epa.h); *lower the bound. It starts from the icosahedron's support points
- * (the icosahedron turned to put a vertex at *pole when pole is given); when their mesh folds about
- * the origin (a thin P with the origin near its rim), from GJK's final tetrahedron, which encloses
- * the origin. */
 /* The icosahedron's vertex i turned so that vertex 0 lies along the unit pole and then by the angle
  * twist about it (a rotation: both frames are right-handed, so the triangles keep their orientation). */
 static prox_vec3 ico_turned(int i, prox_vec3 pole, double twist)
 {
     prox_vec3 v0 = ico_vertex(0), a0 = prox_v3_any_perp(v0), b0 = prox_v3_cross(v0, a0);
     prox_vec3 p = prox_v3_any_perp(pole), q = prox_v3_cross(pole, p), x = ico_vertex(i);
-    prox_vec3 a1 = prox_v3_add(prox_v3_scale(p, cos(twist)), prox_v3_scale(q, sin(twist))), b1 = prox_v3_cross(pole, a1);
+    prox_vec3 a1 = prox_v3_add(prox_v3_scale(p, cos(twist)), prox_v3_scale(q, sin(twist)));
+    prox_vec3 b1 = prox_v3_cross(pole, a1);
     return prox_v3_add(prox_v3_add(prox_v3_scale(a1, prox_v3_dot(x, a0)), prox_v3_scale(b1, prox_v3_dot(x, b0))),
                        prox_v3_scale(pole, prox_v3_dot(x, v0)));
 }
 
+/* An inner polytope of P, refined towards the deepest direction until its nearest triangle proves
+ * the best depth found (epa.h); *lower the bound. It starts from the icosahedron's support points
+ * (the icosahedron turned to put a vertex at *pole, then twisted, when pole is given); when their
+ * mesh folds about the origin (a thin P with the origin near its rim), from GJK's final
+ * tetrahedron, which encloses the origin. */
 static int epa_proves_at(cvx *s, const gjk_out *go, const prox_vec3 *pole, double twist, double *lower)
 {
     static const unsigned char tet[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
