@@ -16,6 +16,7 @@
 #include <math.h>
 #include <stddef.h>
 
+#include "core/minmax.h"
 #include "core/tol.h"
 #include "prox/vec3.h"
 
@@ -88,7 +89,7 @@ static double quadrant(double e0, double e1, double y0, double y1, double *x0, d
                 *x0 = y0, *x1 = y1;
                 return 0.0;
             }
-            double lo = zz > z0 - dd ? zz : z0 - dd, hi = g < 0.0 ? r * r : prox_hypot2(z0, zz); /* no fmax call */
+            double lo = prox_max2(zz, z0 - dd), hi = g < 0.0 ? r * r : prox_hypot2(z0, zz);
             if (hi < lo) hi = lo; /* rounding at the very boundary */
             double u = warm && *warm > lo && *warm < hi ? *warm : lo;
             double w = secular_root(z0, zz, dd, lo, hi, u);

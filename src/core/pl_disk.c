@@ -1,19 +1,18 @@
 /* The minimum over a disk of a convex piecewise-linear function of two variables (pl_disk.h): the
  * cover of the support-function depth (src/sat/convex.c) bounds phi over a cap of directions by it. */
 #include "core/pl_disk.h"
+#include "core/minmax.h"
 
 #include <string.h>
 
 typedef prox_v2 v2;
 
-static inline double dmax(double x, double y) { return x > y ? x : y; }
-static inline double dmin(double x, double y) { return x < y ? x : y; }
 
 /* max_j a_j + b_j . x (2D) over the nj planes. */
 static double pl_max(const double *a, const v2 *b, int nj, v2 x)
 {
     double m = -INFINITY;
-    for (int j = 0; j < nj; ++j) m = dmax(m, a[j] + prox_v2_dot(b[j], x));
+    for (int j = 0; j < nj; ++j) m = prox_max2(m, a[j] + prox_v2_dot(b[j], x));
     return m;
 }
 
@@ -27,7 +26,7 @@ double prox_pl_disk_min(const double *a, const v2 *b, int nj, double r)
         double bn = prox_v2_norm(b[j]);
         v2 x = {0, 0};
         if (bn > 0.0) x.x = -b[j].x * r / bn, x.y = -b[j].y * r / bn;
-        m = dmin(m, pl_max(a, b, nj, x));
+        m = prox_min2(m, pl_max(a, b, nj, x));
         for (int k = j + 1; k < nj; ++k) {
             v2 e = prox_v2_sub(b[j], b[k]);
             double ee = prox_v2_dot(e, e), al = a[j] - a[k];
@@ -37,14 +36,14 @@ double prox_pl_disk_min(const double *a, const v2 *b, int nj, double r)
             if (h2 >= 0.0) {
                 double h = sqrt(h2 / ee);
                 v2 xp = {x0.x - h * e.y, x0.y + h * e.x}, xm = {x0.x + h * e.y, x0.y - h * e.x};
-                m = dmin(m, dmin(pl_max(a, b, nj, xp), pl_max(a, b, nj, xm)));
+                m = prox_min2(m, prox_min2(pl_max(a, b, nj, xp), pl_max(a, b, nj, xm)));
             }
             for (int l = k + 1; l < nj; ++l) {
                 v2 f = prox_v2_sub(b[j], b[l]);
                 double det = prox_v2_cross(e, f), rl = a[l] - a[j], rk = a[k] - a[j];
                 if (!(fabs(det) > 0.0)) continue;
                 v2 x3 = {(rk * f.y - rl * e.y) / det, (e.x * rl - f.x * rk) / det};
-                if (prox_v2_dot(x3, x3) <= r * r) m = dmin(m, pl_max(a, b, nj, x3));
+                if (prox_v2_dot(x3, x3) <= r * r) m = prox_min2(m, pl_max(a, b, nj, x3));
             }
         }
     }
@@ -83,7 +82,7 @@ int prox_pl_disk_above(const double *a, const v2 *b, int nj, double r, double t)
     int inside = n >= 3; /* the centre inside the polygon (counter-clockwise, as the square) */
     for (int i = 0; i < n; ++i) {
         v2 u = p[i], v = p[(i + 1) % n], e = prox_v2_sub(v, u);
-        double ee = prox_v2_dot(e, e), w = ee > 0.0 ? dmax(0.0, dmin(1.0, -prox_v2_dot(u, e) / ee)) : 0.0;
+        double ee = prox_v2_dot(e, e), w = ee > 0.0 ? prox_max2(0.0, prox_min2(1.0, -prox_v2_dot(u, e) / ee)) : 0.0;
         v2 x = {u.x + w * e.x, u.y + w * e.y};
         if (prox_v2_dot(x, x) <= r2) return 0; /* a point of the polygon in the disk */
         if (prox_v2_cross(e, (v2){-u.x, -u.y}) < 0.0) inside = 0;

@@ -11,6 +11,7 @@
  *   WED 1 slant (through v + v1 and v + v2), 2 the side spanned by v2 and v3, 3 the side spanned by
  *       v1 and v3, 4 top (v + v3), 5 base;
  *   ARB k: the k-th face entry of the card. */
+#include "core/minmax.h"
 #include "core/polytope.h"
 #include "core/tol.h"
 
@@ -476,10 +477,7 @@ prox_vec3 prox_polytope_make(const prox_shape *s, prox_polytope *p)
 double prox_polytope_hc(const prox_polytope *p, prox_vec3 d)
 {
     double m = prox_v3_dot(d, p->v[0]);
-    for (int i = 1; i < p->nv; ++i) { /* by comparison: fmax is a library call, once a corner */
-        double t = prox_v3_dot(d, p->v[i]);
-        if (t > m) m = t;
-    }
+    for (int i = 1; i < p->nv; ++i) m = prox_max2(prox_v3_dot(d, p->v[i]), m);
     return m;
 }
 

@@ -10,6 +10,7 @@
  * small frame (a polytope only for RHP, WED and ARB), no generic body built. */
 #include "core/body.h"
 #include "core/curved_normal.h"
+#include "core/minmax.h"
 #include "core/tol.h"
 #include "core/validate.h"
 #include "query/query_internal.h"
@@ -243,8 +244,6 @@ static prox_distance_result sa_overlap(prox_vec3 p)
     return r;
 }
 
-/* max without glibc's fmax call (no NaN can reach here: the shapes are validated) */
-static inline double sa_max(double a, double b) { return a > b ? a : b; }
 
 /* RCC (validated, |axis|^2 = h2) against the sphere: the centre's height t over the base and its
  * radial offset rho give the nearest point (t, rho) clamped to [0, h] x [0, r]. */
@@ -257,14 +256,14 @@ static prox_distance_result rcc_lean(const prox_rcc *c, double h2, const prox_sp
     double rho = prox_v3_norm(rad), tc = t < 0.0 ? 0.0 : (t > h ? h : t);
     if (tc == t && rho <= r) return sa_overlap(s->center); /* the centre is in the cylinder */
     double e = rho > r ? rho - r : 0.0, dist = prox_hypot2(t - tc, e);
-    double scale = sa_max(sa_max(prox_hypot2(t - 0.5 * h, rho), sa_max(h, 2.0 * r)), 2.0 * s->radius);
+    double scale = prox_max2(prox_max2(prox_hypot2(t - 0.5 * h, rho), prox_max2(h, 2.0 * r)), 2.0 * s->radius);
     prox_vec3 q = prox_v3_add(prox_v3_mad(c->base, tc / h, c->axis), rho > r ? prox_v3_scale(rad, r / rho) : rad);
     if (dist - s->radius <= PROX_QUERY_REL_TOL * scale) return sa_overlap(q);
     prox_vec3 n = prox_v3_scale(prox_v3_sub(s->center, q), 1.0 / dist);
     /* support of the cylinder along n: n.centre + (h/2)|n.w| + r |n - (n.w) w| */
     double nw = prox_v3_dot(n, c->axis) / h;
     double h_n = prox_v3_dot(n, prox_v3_mad(c->base, 0.5, c->axis)) + 0.5 * h * fabs(nw) +
-                 r * sqrt(sa_max(0.0, 1.0 - nw * nw));
+                 r * sqrt(prox_max2(0.0, 1.0 - nw * nw));
     return sa_disjoint(q, dist, s, h_n, n);
 }
 
@@ -280,12 +279,12 @@ static prox_distance_result box_lean(const prox_box *b, const prox_sph *s)
         inside &= ck == sk;
         q = prox_v3_mad(q, ck, b->edge[k]);
         m = prox_v3_mad(m, 0.5, b->edge[k]);
-        e2max = sa_max(e2max, ee);
+        e2max = prox_max2(e2max, ee);
     }
     if (inside) return sa_overlap(s->center);
     prox_vec3 v = prox_v3_sub(s->center, q);
     double dist = prox_v3_norm(v);
-    double scale = sa_max(sa_max(prox_v3_dist(m, s->center), sqrt(e2max)), 2.0 * s->radius);
+    double scale = prox_max2(prox_max2(prox_v3_dist(m, s->center), sqrt(e2max)), 2.0 * s->radius);
     if (dist - s->radius <= PROX_QUERY_REL_TOL * scale) return sa_overlap(q);
     prox_vec3 n = prox_v3_scale(v, 1.0 / dist);
     double h_n = prox_v3_dot(n, m);

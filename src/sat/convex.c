@@ -36,6 +36,7 @@
 #include "epa.h"
 #include "core/axis.h"
 #include "core/edge_root.h"
+#include "core/minmax.h"
 #include "core/pl_disk.h"
 #include "core/plane2.h"
 #include "core/tol.h"
@@ -1295,30 +1296,26 @@ static const unsigned char cvx_ico_f[20][3] = {
 
 static prox_vec3 ico_vertex(int i) { return unit(prox_v3(cvx_ico_v[i][0], cvx_ico_v[i][1], cvx_ico_v[i][2])); }
 
-/* max and min of two numbers that are not NaN, inline (fmax and fmin are library calls that order
- * NaNs, and the cover's bounds call them hundreds of times a cell). */
-static inline double cmax(double x, double y) { return x > y ? x : y; }
-static inline double cmin(double x, double y) { return x < y ? x : y; }
 
 /* Over the cap of radius rho around unit c, the range [amin, amax] of the angle to the unit axis w. */
 static void cap_angles(prox_vec3 w, prox_vec3 c, double rho, double *amin, double *amax)
 {
     double al = angle(c, w);
-    *amin = cmax(0.0, al - rho);
-    *amax = cmin(PROX_PI, al + rho);
+    *amin = prox_max2(0.0, al - rho);
+    *amax = prox_min2(PROX_PI, al + rho);
 }
 
 /* min over the angle range of hh |cos a| + r sin a (concave in cos a on each side of a = pi/2). */
 static double lateral_min(double hh, double r, double amin, double amax)
 {
-    double f = cmin(hh * fabs(cos(amin)) + r * sin(amin), hh * fabs(cos(amax)) + r * sin(amax));
-    return amin < 0.5 * PROX_PI && amax > 0.5 * PROX_PI ? cmin(f, r) : f;
+    double f = prox_min2(hh * fabs(cos(amin)) + r * sin(amin), hh * fabs(cos(amax)) + r * sin(amax));
+    return amin < 0.5 * PROX_PI && amax > 0.5 * PROX_PI ? prox_min2(f, r) : f;
 }
 
 static double cone_at(const prox_cone *k, double a)
 {
     double t = cos(a), p = sin(a);
-    return cmax(-k->hh * t + k->r1 * p, k->hh * t + k->r2 * p);
+    return prox_max2(-k->hh * t + k->r1 * p, k->hh * t + k->r2 * p);
 }
 
 /* The exact minimum (a lower bound for ECYL and the polytopes) of hc over the cap around unit c. */
@@ -1331,27 +1328,27 @@ static double body_cap(const prox_body *b, prox_vec3 c, double rho)
         const prox_ellb *k = &b->x.ell;
         cap_angles(k->w, c, rho, &amin, &amax);
         double e = k->a * k->a - k->b * k->b, t2;
-        if (e >= 0.0) t2 = amin <= 0.5 * PROX_PI && amax >= 0.5 * PROX_PI ? 0.0 : cmin(cos(amin) * cos(amin), cos(amax) * cos(amax));
-        else t2 = cmax(cos(amin) * cos(amin), cos(amax) * cos(amax));
-        return sqrt(cmax(0.0, k->b * k->b + e * t2));
+        if (e >= 0.0) t2 = amin <= 0.5 * PROX_PI && amax >= 0.5 * PROX_PI ? 0.0 : prox_min2(cos(amin) * cos(amin), cos(amax) * cos(amax));
+        else t2 = prox_max2(cos(amin) * cos(amin), cos(amax) * cos(amax));
+        return sqrt(prox_max2(0.0, k->b * k->b + e * t2));
     }
     case PROX_BODY_CYL:
         cap_angles(b->cyl.w, c, rho, &amin, &amax);
         return lateral_min(b->cyl.hh, b->cyl.r, amin, amax);
     case PROX_BODY_ECYL:
         cap_angles(b->x.ecyl.w, c, rho, &amin, &amax);
-        return lateral_min(b->x.ecyl.hh, cmin(b->x.ecyl.a1, b->x.ecyl.a2), amin, amax);
+        return lateral_min(b->x.ecyl.hh, prox_min2(b->x.ecyl.a1, b->x.ecyl.a2), amin, amax);
     case PROX_BODY_CONE: {
         const prox_cone *k = &b->x.cone;
         cap_angles(k->w, c, rho, &amin, &amax);
-        double f = cmin(cone_at(k, amin), cone_at(k, amax)), as = atan2(2.0 * k->hh, k->r1 - k->r2);
-        return as > amin && as < amax ? cmin(f, cone_at(k, as)) : f;
+        double f = prox_min2(cone_at(k, amin), cone_at(k, amax)), as = atan2(2.0 * k->hh, k->r1 - k->r2);
+        return as > amin && as < amax ? prox_min2(f, cone_at(k, as)) : f;
     }
     case PROX_BODY_BOX: {
         double f = 0.0;
         for (int i = 0; i < 3; ++i) {
             cap_angles(b->box.a[i], c, rho, &amin, &amax);
-            double m = amin <= 0.5 * PROX_PI && amax >= 0.5 * PROX_PI ? 0.0 : cmin(fabs(cos(amin)), fabs(cos(amax)));
+            double m = amin <= 0.5 * PROX_PI && amax >= 0.5 * PROX_PI ? 0.0 : prox_min2(fabs(cos(amin)), fabs(cos(amax)));
             f += b->box.h[i] * m;
         }
         return f;
@@ -1360,7 +1357,7 @@ static double body_cap(const prox_body *b, prox_vec3 c, double rho)
         double f = -INFINITY;
         for (int i = 0; i < b->x.poly.nv; ++i) {
             prox_vec3 v = b->x.poly.v[i];
-            f = cmax(f, prox_v3_norm(v) * cos(cmin(PROX_PI, angle(v, c) + rho)));
+            f = prox_max2(f, prox_v3_norm(v) * cos(prox_min2(PROX_PI, angle(v, c) + rho)));
         }
         return f;
     }
@@ -1392,17 +1389,17 @@ static double cap_bound(const cvx *s, prox_vec3 c, const prox_vec3 *d, const pro
     if (rho < 1.5) {
         r = tan(rho), cr = cos(rho);
         double one = -INFINITY;
-        for (int j = 0; j < ng; ++j) one = cmax(one, a[j] - prox_v2_norm(b[j]) * r);
+        for (int j = 0; j < ng; ++j) one = prox_max2(one, a[j] - prox_v2_norm(b[j]) * r);
         lb = (one > 0.0 ? one * cr : one) + rb - round;
         if (lb >= T) return lb;
         double tt = T - rb + round; /* M cr + rb - round >= T for M >= mt (M <= 0: no scaling) */
         if (prox_pl_disk_above(a, b, ng, r, tt > 0.0 ? tt / cr : tt)) return T;
     }
-    double dn = prox_v3_norm(s->delta), dl = dn > 0.0 ? -dn * cos(cmax(0.0, angle(c, s->delta) - rho)) : 0.0;
-    lb = cmax(lb, body_cap(&s->a, c, rho) + body_cap(&s->b, prox_v3_neg(c), rho) + dl - round);
+    double dn = prox_v3_norm(s->delta), dl = dn > 0.0 ? -dn * cos(prox_max2(0.0, angle(c, s->delta) - rho)) : 0.0;
+    lb = prox_max2(lb, body_cap(&s->a, c, rho) + body_cap(&s->b, prox_v3_neg(c), rho) + dl - round);
     if (lb >= T || !need || !(rho < 1.5)) return lb;
     double comb = prox_pl_disk_min(a, b, ng, r);
-    return cmax(lb, (comb > 0.0 ? comb * cr : comb) + rb - round);
+    return prox_max2(lb, (comb > 0.0 ? comb * cr : comb) + rb - round);
 }
 
 typedef struct cvx_cover {
@@ -1420,8 +1417,8 @@ static void cover_tri(cvx *s, cvx_cover *cv, const prox_vec3 *q, const prox_vec3
     ++cv->cells;
     prox_vec3 c = unit(prox_v3_add(prox_v3_add(q[0], q[1]), q[2])), gc = phi_grad(s, c);
     /* the cap's radius from the longest chord x: the angle 2 asin(x / 2) <= x / sqrt(1 - x^2 / 4) */
-    double x2 = cmax(prox_v3_norm2(prox_v3_sub(c, q[0])), cmax(prox_v3_norm2(prox_v3_sub(c, q[1])), prox_v3_norm2(prox_v3_sub(c, q[2]))));
-    double rho = sqrt(x2 / cmax(1.0 - 0.25 * x2, 0.25)) * (1.0 + 1e-12) + 4.0 * DBL_EPSILON;
+    double x2 = prox_max2(prox_v3_norm2(prox_v3_sub(c, q[0])), prox_max2(prox_v3_norm2(prox_v3_sub(c, q[1])), prox_v3_norm2(prox_v3_sub(c, q[2]))));
+    double rho = sqrt(x2 / prox_max2(1.0 - 0.25 * x2, 0.25)) * (1.0 + 1e-12) + 4.0 * DBL_EPSILON;
     double f = prox_v3_dot(gc, c), best0 = s->best_phi; /* phi(c) = h_P(c), from its support point */
     record(s, c, f);
     if (f < best0 - cv->tol) {
@@ -1432,9 +1429,9 @@ static void cover_tri(cvx *s, cvx_cover *cv, const prox_vec3 *q, const prox_vec3
     prox_vec3 g[5] = {gc, gq[0], gq[1], gq[2], cv->gb}, d[5] = {c, q[0], q[1], q[2], cv->bd};
     int last = depth >= CVX_BB_DEPTH || cv->cells >= CVX_BB_BUDGET; /* no split: the bound is kept */
     double lb = cap_bound(s, c, d, g, 5, rho, s->best_phi - cv->tol, last);
-    if (lb >= s->best_phi - cv->tol) { cv->lb = cmin(cv->lb, lb); return; }
+    if (lb >= s->best_phi - cv->tol) { cv->lb = prox_min2(cv->lb, lb); return; }
     if (last) {
-        cv->lb = cmin(cv->lb, lb);
+        cv->lb = prox_min2(cv->lb, lb);
         cv->incomplete = 1;
         return;
     }

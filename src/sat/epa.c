@@ -1,6 +1,8 @@
 /* The depth's lower bound by an expanding inner polytope (epa.h). */
 #include "epa.h"
 
+#include "core/minmax.h"
+
 #include <float.h>
 #include <math.h>
 #include <string.h>
@@ -31,19 +33,10 @@ typedef struct epa {
     int nfree;
 } epa;
 
-/* The least and the largest of three finite values by comparison (fmin and fmax are library calls,
- * which every new face paid four times). */
-static inline double min3(double x, double y, double z)
-{
-    double m = x < y ? x : y;
-    return m < z ? m : z;
-}
-
-static inline double max3(double x, double y, double z)
-{
-    double m = x > y ? x : y;
-    return m > z ? m : z;
-}
+/* The least and the largest of three values, not NaN, without a library call (core/minmax.h): every
+ * new face takes four. */
+static inline double min3(double x, double y, double z) { return prox_min2(prox_min2(x, y), z); }
+static inline double max3(double x, double y, double z) { return prox_max2(prox_max2(x, y), z); }
 
 /* The point of segment ab nearest the origin. */
 static prox_vec3 seg_near(prox_vec3 a, prox_vec3 b)
