@@ -1909,9 +1909,6 @@ static int pair_certified(const cvx *s, prox_vec3 x, prox_vec3 y, cvx_answer *r)
     return 1;
 }
 
-/* GJK's own certificate: most pairs end GJK with its simplex pair (convex combinations of support
- * points) and -phi within a few ulps of S, often close enough to the normal that the pair certifies
- * along its own direction; then the search and the support-set witnesses have nothing to add. */
 /* An early pair of a curved part made the closest: kept when each point is its body's closest point
  * to the other (the pair is then the closest one, the solids being convex); else the support sets'
  * pair of the answer's candidate normals (the certified one polished, the kinks near it:
@@ -1926,14 +1923,25 @@ static void closest_pair(cvx *s, const gjk_out *g, cvx_answer *r)
     if (fabs(f.upper - f.lower) <= PROX_TOL_CERT * s->S && f.upper <= r->upper + PROX_TOL_SNAP * s->S) *r = f;
 }
 
-static int gjk_certified(cvx *s, const gjk_out *g, cvx_answer *r)
+/* An early certificate of the pair x in A, y in B (pair_certified). With a curved part the pair
+ * certified may still stand off the closest one, flat as the distance is there: GJK's pair (convex
+ * combinations of support points) up to its chords' sag inside a curved surface, 8e-9 S for an
+ * elliptic cylinder 0.04 S from a cylinder; the support points at Newton's last iterate, ~1e-10 rad
+ * off the normal, 4e-11 S; the support sets' pair at a direction on a kink circle, 3e-10 S (two
+ * elliptic cylinders): closest_pair makes it the closest. */
+static int early_pair(cvx *s, const gjk_out *g, prox_vec3 x, prox_vec3 y, cvx_answer *r)
 {
-    if (!(g->verdict == 1 && s->best_phi < 0.0 && pair_certified(s, g->xa, g->xb, r))) return 0;
-    /* a curved part: GJK's pair (convex combinations of support points) may lie up to its chords'
-     * sag inside a curved surface, and its distance, exact to PROX_TOL_CERT S, leaves such a pair
-     * ~sqrt(that x S) off the closest one (8e-9 S for an elliptic cylinder 0.04 S from a cylinder) */
+    if (!pair_certified(s, x, y, r)) return 0;
     if (!polytopes(s)) closest_pair(s, g, r);
     return 1;
+}
+
+/* GJK's own certificate: most pairs end GJK with its simplex pair (convex combinations of support
+ * points) and -phi within a few ulps of S, often close enough to the normal that the pair certifies
+ * along its own direction; then the search and the support-set witnesses have nothing to add. */
+static int gjk_certified(cvx *s, const gjk_out *g, cvx_answer *r)
+{
+    return g->verdict == 1 && s->best_phi < 0.0 && early_pair(s, g, g->xa, g->xb, r);
 }
 
 /* The next cheapest: Newton on the sphere from GJK's best direction (it reaches the normal of a
@@ -1950,17 +1958,14 @@ static int newton_certified(cvx *s, const gjk_out *g, cvx_answer *r)
     s->halvings = s->nhalvings = 30;
     prox_vec3 x, y;
     support_points(s, e, &x, &y); /* a smooth contact: the support points at Newton's last iterate */
-    if (pair_certified(s, x, y, r)) {
-        closest_pair(s, g, r); /* the iterate may stand ~1e-10 rad off the normal, flat as phi is there */
-        return 1;
-    }
+    if (early_pair(s, g, x, y, r)) return 1;
     for (int i = 0; i < s->nk; ++i)
         if (!s->k[i].circle && kink_dist(&s->k[i], s->best_d) <= CVX_LOCAL) consider(s, s->k[i].w);
     support_points(s, s->best_d, &x, &y); /* a face's normal among the kink points */
-    if (pair_certified(s, x, y, r)) return 1;
+    if (early_pair(s, g, x, y, r)) return 1;
     prox_vec3 k = kinks_local(s, s->best_d, s->near); /* an edge: the kink circles through the optimum */
     witness_disjoint(s, k, &x, &y);
-    return pair_certified(s, x, y, r);
+    return early_pair(s, g, x, y, r);
 }
 
 /* A pair with no kinks (ELL and SPH: phi smooth everywhere) whose centres' direction separates them
