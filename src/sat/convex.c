@@ -1701,21 +1701,28 @@ static void pair_make(const prox_body *a, const prox_body *b, cvx *s, prox_vec3 
 static prox_vec3 to_abs(prox_vec3 o, double f, prox_vec3 p) { return prox_v3_mad(o, 1.0 / f, p); }
 
 /* The depth answer: among the candidate normals whose depth is within PROX_TOL_TOUCH S of the best,
- * the one whose witnesses meet p2 - p1 = sd n best. */
+ * the one whose witnesses meet p2 - p1 = sd n best. The best direction is tried first, alone: its
+ * witnesses meet exactly for most pairs (78 % of overlapping TRC-RCC pairs), and the other
+ * candidates (its polish, the kinks near it: answer_candidates) are searched only when they do not. */
 static double finish_overlap(cvx *s, prox_signed_result *r)
 {
-    prox_vec3 c[24];
-    int nc = answer_candidates(s, c, 24);
+    prox_vec3 c[24] = {s->best_d};
+    int nc = 1;
     double best = INFINITY, lim = s->best_phi + PROX_TOL_TOUCH * s->S;
     r->sd = -s->best_phi, r->normal = s->best_d;
     support_points(s, s->best_d, &r->p1, &r->p2);
     for (int k = 0; k < nc; ++k) {
         double f = phi_eval(s, c[k]);
-        if (!(f <= lim)) continue;
-        prox_vec3 x = {0, 0, 0}, y = x;
-        double e = witness_overlap(s, c[k], -f, &x, &y);
-        if (e < best) best = e, r->sd = -f, r->normal = c[k], r->p1 = x, r->p2 = y;
-        if (best <= PROX_TOL_SEARCH * s->S) break; /* exact to rounding: no other candidate can matter */
+        if (f <= lim) {
+            prox_vec3 x = {0, 0, 0}, y = x;
+            double e = witness_overlap(s, c[k], -f, &x, &y);
+            if (e < best) best = e, r->sd = -f, r->normal = c[k], r->p1 = x, r->p2 = y;
+            if (best <= PROX_TOL_SEARCH * s->S) break; /* exact to rounding: no other candidate can matter */
+        }
+        if (k == 0) { /* the other candidates; their searches may lower the best */
+            nc = answer_candidates(s, c, 24);
+            lim = s->best_phi + PROX_TOL_TOUCH * s->S;
+        }
     }
     double e0 = best, e;
     /* each witness replaced by its body's boundary point nearest p_other -+ sd n, in turn, while that
