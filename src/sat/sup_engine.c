@@ -898,27 +898,31 @@ void sup_overlap_answer(const prox_body *a, const prox_body *b, prox_vec3 n0, pr
     prox_vec3 cand[8];
     int nc = 0;
     cand[nc++] = n0;
-    cand[nc++] = n0; /* replaced by its cell polish if n0 itself is not exact (below) */
-    prox_vec3 r[6];
-    int nr = sup_ridges(a, r);
-    nr += sup_ridges(b, r + nr);
-    for (int i = 0; i < nr && nc < 8; ++i) {
-        double dw = prox_v3_dot(n0, r[i]);
-        if (fabs(dw) < PROX_TOL_KINK) cand[nc++] = polish_ridge(&s, r[i], n0);
-        else if (fabs(dw) > 1.0 - PROX_TOL_CONE) cand[nc++] = dw > 0.0 ? r[i] : prox_v3_neg(r[i]);
-    }
     double phi0 = phi_eval(&s, n0), best = INFINITY;
     for (int k = 0; k < nc; ++k) {
         if (k == 1) cand[1] = polish_cell(&s, n0);
-        if (!(fabs(prox_v3_norm(cand[k]) - 1.0) < 0.5)) continue;
-        double f = k ? phi_eval(&s, cand[k]) : phi0;
-        if (!(f <= phi0 + PROX_TOL_SNAP * s.scale)) continue; /* a polish may not cost depth */
-        prox_vec3 x, y;
-        sup_witnesses(a, b, cand[k], -f, &x, &y);
-        prox_vec3 nk = sup_consistent_normal(cand[k], -f, x, y);
-        double e = prox_v3_norm(prox_v3_mad(prox_v3_sub(y, x), f, nk));
-        if (e < best) best = e, res->sd = -f, res->normal = nk, res->p1 = x, res->p2 = y;
-        if (best <= PROX_TOL_SEARCH * s.scale) return; /* exact to rounding: no other candidate can matter */
+        if (fabs(prox_v3_norm(cand[k]) - 1.0) < 0.5) {
+            double f = k ? phi_eval(&s, cand[k]) : phi0;
+            if (f <= phi0 + PROX_TOL_SNAP * s.scale) { /* a polish may not cost depth */
+                prox_vec3 x, y;
+                sup_witnesses(a, b, cand[k], -f, &x, &y);
+                prox_vec3 nk = sup_consistent_normal(cand[k], -f, x, y);
+                double e = prox_v3_norm(prox_v3_mad(prox_v3_sub(y, x), f, nk));
+                if (e < best) best = e, res->sd = -f, res->normal = nk, res->p1 = x, res->p2 = y;
+                if (best <= PROX_TOL_SEARCH * s.scale) return; /* exact to rounding: no other candidate can matter */
+            }
+        }
+        if (k > 0) continue;
+        /* n0 itself not exact: its cell polish, then the ridges and axes it lies on */
+        cand[nc++] = n0; /* replaced by the polish (above) */
+        prox_vec3 r[6];
+        int nr = sup_ridges(a, r);
+        nr += sup_ridges(b, r + nr);
+        for (int i = 0; i < nr && nc < 8; ++i) {
+            double dw = prox_v3_dot(n0, r[i]);
+            if (fabs(dw) < PROX_TOL_KINK) cand[nc++] = polish_ridge(&s, r[i], n0);
+            else if (fabs(dw) > 1.0 - PROX_TOL_CONE) cand[nc++] = dw > 0.0 ? r[i] : prox_v3_neg(r[i]);
+        }
     }
     overlap_exact_pair(a, b, s.scale, best, res);
 }
