@@ -8,10 +8,10 @@
  * lower bound within PROX_TOL_CERT S of it. The early exits must be taken for most disjoint pairs.
  * The signed query likewise (prox_convex_signed_full: no early exit, the depth proved by the cover),
  * whose overlaps the quick search proves (an inner polytope of A - B, epa.h, or tangent balls at the
- * witnesses): each proven lower bound must stay below the other search's depth. A cone overlapping a
- * box on which the inner polytope once stalled, two deeply overlapping ellipsoids, a cone against a
- * cylinder whose first polytope stalls and two cones whose first two stall must be proved without the
- * cover. */
+ * witnesses, or for two ellipsoids an ellipsoid inside A - B): each proven lower bound must stay below
+ * the other search's depth. A cone overlapping a box on which the inner polytope once stalled, two
+ * deeply overlapping ellipsoids, a cone against a cylinder whose first polytope stalls and two cones
+ * whose first two stall must be proved without the cover. */
 #include "test_util.h"
 
 #include <float.h>
@@ -320,11 +320,10 @@ static void test_signed_cone_box_quick(void **state)
     check_quick_proof(&a, &b, -2.0);
 }
 
-/* Two ellipsoids 4.37 deep, their centres 0.8 apart. No ball of that radius fits at their witnesses,
- * so the inner polytope proves the depth, its triangles shrinking over the curved patch until their
- * sag is within the proof's 1e-10 S: that needs more than 140 support points, the budget of a kinked
- * pair, after which the cover (the global search) had to prove it. A pair without kinks may take 300:
- * the quick search must prove the depth, equal to the cover's within the bar. */
+/* Two ellipsoids 4.37 deep, their centres 0.8 apart. No ball of that radius fits at their witnesses;
+ * the inner polytope needs more than 140 support points here (the budget of a kinked pair; a pair
+ * without kinks may take 300), and the ellipsoid inside the Minkowski difference (ell_depth.c) proves
+ * it at once. The quick search must prove the depth, equal to the cover's within the bar. */
 static void test_signed_deep_ellipsoids_quick(void **state)
 {
     (void)state;

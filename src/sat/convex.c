@@ -33,6 +33,7 @@
  * at its best direction), each accepted only when -phi along the pair's own direction meets it. */
 #include "convex.h"
 
+#include "ell_depth.h"
 #include "epa.h"
 #include "core/axis.h"
 #include "core/edge_root.h"
@@ -1543,6 +1544,20 @@ static double ball_bound(const cvx *s, prox_vec3 n, prox_vec3 p1, prox_vec3 p2)
 
 static double finish_overlap(cvx *s, prox_signed_result *r);
 
+/* 1 when the ellipsoid inside the Minkowski difference of two ellipsoids, touching it along the best
+ * direction (ell_depth.h), proves the depth (info filled): a deep overlap of two ellipsoids, which
+ * the tangent balls do not prove and the inner polytope proves only with hundreds of points. */
+static int ellipsoid_certified(const cvx *s, const prox_signed_result *r, prox_convex_info *info)
+{
+    if (!prox_ell_pair(&s->a, &s->b)) return 0;
+    double lb = prox_ell_depth_lower(&s->a, &s->b, s->delta, s->best_d, s->S);
+    if (!(lb >= s->best_phi - PROX_TOL_DEPTH_CERT * s->S)) return 0;
+    info->lower = fmin(lb, s->best_phi);
+    info->upper = -r->sd;
+    info->certified = 1;
+    return 1;
+}
+
 /* 1 when the tangent balls at the answer's witnesses prove its depth (info filled). */
 static int ball_certified(const cvx *s, const prox_signed_result *r, prox_convex_info *info)
 {
@@ -1627,6 +1642,7 @@ static int depth_quick(cvx *s, const gjk_out *go, prox_signed_result *r, prox_co
         finish_overlap(s, r);
     }
     if (!epa && ball_certified(s, r, info)) return 1;
+    if (!epa && ellipsoid_certified(s, r, info)) return 1;
     if (!epa && s->nk == 0 && epa_proves(s, go, &lower)) { /* its support points may have found a deeper one */
         descend_best(s);
         finish_overlap(s, r);

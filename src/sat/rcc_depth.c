@@ -29,7 +29,6 @@
 #include "core/tol.h"
 
 #include <float.h>
-#include <string.h>
 
 /* Best direction and value so far. */
 typedef struct dp_state {
@@ -393,15 +392,15 @@ static int dp_cell_may(const prox_fcircle *p, const prox_body *kp, int ep, const
     static const double gc[N] = {1.0, DP_H, 0.0, -DP_H, -1.0, -DP_H, 0.0, DP_H};
     static const double gs[N] = {0.0, DP_H, 1.0, DP_H, 0.0, -DP_H, -1.0, -DP_H};
 #undef DP_H
-    double f0[DP_NVAL], fa[DP_NVAL], fb[DP_NVAL];
+    double f[2][DP_NVAL], f0[DP_NVAL]; /* the grid's first angle; its current interval's ends, in turn */
     dp_cell_vals(&g, 1.0, 0.0, f0);
-    memcpy(fa, f0, sizeof fa);
+    const double *fa = f0;
     for (int k = 1; k <= N; ++k) {
-        double t0 = 2.0 * PROX_PI * (k - 1) / N, t1 = 2.0 * PROX_PI * k / N;
+        double *fb = f[k & 1];
         if (k < N) dp_cell_vals(&g, gc[k], gs[k], fb);
-        else memcpy(fb, f0, sizeof fb);
-        if (dp_cell_span(&g, t0, fa, t1, fb, DEPTH)) return 1;
-        memcpy(fa, fb, sizeof fa);
+        else fb = f0;
+        if (dp_cell_span(&g, (k - 1) * (2.0 * PROX_PI / N), fa, k * (2.0 * PROX_PI / N), fb, DEPTH)) return 1;
+        fa = fb;
     }
     return 0;
 }
