@@ -1920,7 +1920,8 @@ static void common_point(cvx *s, const gjk_out *g, prox_distance_result *r, prox
 /* 1 when both bodies are polytopes (a box or a polytope: their support sets are exact). */
 static int polytopes(const cvx *s)
 {
-    return (s->a.kind == PROX_BODY_BOX || s->a.kind == PROX_BODY_POLY) && (s->b.kind == PROX_BODY_BOX || s->b.kind == PROX_BODY_POLY);
+    return (s->a.kind == PROX_BODY_BOX || s->a.kind == PROX_BODY_POLY) &&
+           (s->b.kind == PROX_BODY_BOX || s->b.kind == PROX_BODY_POLY);
 }
 
 /* The early certificate of a disjoint pair x in A, y in B: -phi along the pair's own direction meets
@@ -1939,8 +1940,8 @@ static int pair_certified(const cvx *s, prox_vec3 x, prox_vec3 y, cvx_answer *r)
 static void closest_pair(cvx *s, const gjk_out *g, cvx_answer *r)
 {
     double tol = PROX_TOL_SEARCH * s->S;
-    if (prox_v3_dist(prox_body_closest(&s->a, r->p2), r->p1) <= tol && prox_v3_dist(prox_body_closest(&s->b, r->p1), r->p2) <= tol)
-        return;
+    double ea = prox_v3_dist(prox_body_closest(&s->a, r->p2), r->p1);
+    if (ea <= tol && prox_v3_dist(prox_body_closest(&s->b, r->p1), r->p2) <= tol) return;
     consider(s, r->n);
     cvx_answer f = finish_disjoint(s, g);
     if (fabs(f.upper - f.lower) <= PROX_TOL_CERT * s->S && f.upper <= r->upper + PROX_TOL_SNAP * s->S) *r = f;

@@ -24,14 +24,16 @@
 
 int prox_ell_pair(const prox_body *a, const prox_body *b)
 {
-    return (a->kind == PROX_BODY_ELL || a->kind == PROX_BODY_SPH) && (b->kind == PROX_BODY_ELL || b->kind == PROX_BODY_SPH);
+    return (a->kind == PROX_BODY_ELL || a->kind == PROX_BODY_SPH) &&
+           (b->kind == PROX_BODY_ELL || b->kind == PROX_BODY_SPH);
 }
 
 /* The symmetric square root L of the body's shape matrix. */
 static void ell_root(const prox_body *b, double L[3][3])
 {
-    double e = b->kind == PROX_BODY_SPH ? b->r : b->x.ell.b, f = b->kind == PROX_BODY_SPH ? 0.0 : b->x.ell.a - b->x.ell.b;
-    prox_vec3 w = b->kind == PROX_BODY_SPH ? prox_v3(0, 0, 1) : b->x.ell.w;
+    int sph = b->kind == PROX_BODY_SPH;
+    double e = sph ? b->r : b->x.ell.b, f = sph ? 0.0 : b->x.ell.a - b->x.ell.b;
+    prox_vec3 w = sph ? prox_v3(0, 0, 1) : b->x.ell.w;
     double wv[3] = {w.x, w.y, w.z};
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) L[i][j] = (i == j ? e : 0.0) + f * wv[i] * wv[j];
@@ -138,7 +140,8 @@ double prox_ell_depth_lower(const prox_body *a, const prox_body *b, prox_vec3 de
     /* K = L_A + L_B Q^T and C = K K^T */
     double K[3][3], C[3][3], s2[3], V[3][3];
     for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) K[i][j] = La[i][j] + Lb[i][0] * Q[j][0] + Lb[i][1] * Q[j][1] + Lb[i][2] * Q[j][2];
+        for (int j = 0; j < 3; ++j)
+            K[i][j] = La[i][j] + Lb[i][0] * Q[j][0] + Lb[i][1] * Q[j][1] + Lb[i][2] * Q[j][2];
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) C[i][j] = K[i][0] * K[j][0] + K[i][1] * K[j][1] + K[i][2] * K[j][2];
     jacobi3(C, s2, V);
