@@ -1167,6 +1167,12 @@ static double project_pair(const cvx *s, prox_vec3 *x, prox_vec3 *y)
     return d;
 }
 
+/* How far x in A and y in B are from being each other's closest points. */
+static double pair_residual(const cvx *s, prox_vec3 x, prox_vec3 y)
+{
+    return fmax(prox_v3_dist(prox_body_closest(&s->a, y), x), prox_v3_dist(prox_body_closest(&s->b, x), y));
+}
+
 /* Disjoint: the closest pair of the support sets along n over the readings, polished by alternating
  * exact projections onto the solids (which never increase |p2 - p1| and keep p1 in A, p2 in B). */
 static double witness_disjoint(const cvx *s, prox_vec3 n, prox_vec3 *p1, prox_vec3 *p2)
@@ -1233,11 +1239,13 @@ typedef struct cvx_answer {
     prox_vec3 n, p1, p2;
 } cvx_answer;
 
-/* The closest candidate pair; among pairs equally close to rounding, the one whose p2 - p1 is best
- * aligned with its normal. The simplex pair of GJK, polished, is a candidate too. A pair nearer than
- * the proven lower bound -phi(best) (less PROX_TOL_CERT S) cannot lie in both solids (a needle's
- * support point lifted off its rim: 3.8e-13 apart where the distance is 1.9e-10) and is taken only
- * when no other pair is left, uncertified. */
+/* The closest candidate pair; among pairs equally close to rounding, the one nearest to being the
+ * closest pair: p2 - p1 along its normal, and each point its body's closest point to the other (a
+ * pair aligned with its own normal to 6e-17 S can still stand 5e-10 S along a flat direction of the
+ * contact: a cone against a cylinder's lateral surface). The simplex pair of GJK, polished, is a
+ * candidate too. A pair nearer than the proven lower bound -phi(best) (less PROX_TOL_CERT S) cannot
+ * lie in both solids (a needle's support point lifted off its rim: 3.8e-13 apart where the distance
+ * is 1.9e-10) and is taken only when no other pair is left, uncertified. */
 static cvx_answer finish_disjoint(cvx *s, const gjk_out *g)
 {
     prox_vec3 c[24];
@@ -1249,8 +1257,9 @@ static cvx_answer finish_disjoint(cvx *s, const gjk_out *g)
             prox_vec3 x = {0, 0, 0}, y = x;
             double dk = witness_disjoint(s, c[k], &x, &y);
             if (pass == 0 && dk < floor) continue;
-            double ak = prox_v3_norm(prox_v3_mad(prox_v3_sub(y, x), -dk, c[k]));
-            if (dk < r.upper - tie || (dk <= r.upper + tie && ak < align)) {
+            if (!(dk <= r.upper + tie)) continue;
+            double ak = fmax(prox_v3_norm(prox_v3_mad(prox_v3_sub(y, x), -dk, c[k])), pair_residual(s, x, y));
+            if (dk < r.upper - tie || ak < align) {
                 if (dk < r.upper) r.upper = dk;
                 align = ak, r.p1 = x, r.p2 = y, r.n = c[k];
             }
@@ -1939,9 +1948,7 @@ static int pair_certified(const cvx *s, prox_vec3 x, prox_vec3 y, cvx_answer *r)
  * finish_disjoint), when it certifies no farther apart. */
 static void closest_pair(cvx *s, const gjk_out *g, cvx_answer *r)
 {
-    double tol = PROX_TOL_SEARCH * s->S;
-    double ea = prox_v3_dist(prox_body_closest(&s->a, r->p2), r->p1);
-    if (ea <= tol && prox_v3_dist(prox_body_closest(&s->b, r->p1), r->p2) <= tol) return;
+    if (pair_residual(s, r->p1, r->p2) <= PROX_TOL_SEARCH * s->S) return;
     consider(s, r->n);
     cvx_answer f = finish_disjoint(s, g);
     if (fabs(f.upper - f.lower) <= PROX_TOL_CERT * s->S && f.upper <= r->upper + PROX_TOL_SNAP * s->S) *r = f;
