@@ -1553,14 +1553,10 @@ static double ball_bound(const cvx *s, prox_vec3 n, prox_vec3 p1, prox_vec3 p2)
 
 static double finish_overlap(cvx *s, prox_signed_result *r);
 
-/* 1 when the ellipsoid inside the Minkowski difference of two ellipsoids, touching it along the best
- * direction (ell_depth.h), proves the depth (info filled). Tried before the tangent balls: it proves
- * 96 % of overlapping ellipsoid pairs (the balls 78 %, the shallow ones) at a third of their cost,
- * and deep overlaps, which the inner polytope proves only with hundreds of points. */
-static int ellipsoid_certified(const cvx *s, const prox_signed_result *r, prox_convex_info *info)
+/* 1 when the lower bound lb of the depth proves the answer r (within PROX_TOL_DEPTH_CERT S of the
+ * best found); info filled with what was proved. */
+static int bound_proves(const cvx *s, const prox_signed_result *r, double lb, prox_convex_info *info)
 {
-    if (!prox_ell_pair(&s->a, &s->b)) return 0;
-    double lb = prox_ell_depth_lower(&s->a, &s->b, s->delta, s->best_d, s->S);
     if (!(lb >= s->best_phi - PROX_TOL_DEPTH_CERT * s->S)) return 0;
     info->lower = fmin(lb, s->best_phi);
     info->upper = -r->sd;
@@ -1568,15 +1564,20 @@ static int ellipsoid_certified(const cvx *s, const prox_signed_result *r, prox_c
     return 1;
 }
 
+/* 1 when the ellipsoid inside the Minkowski difference of two ellipsoids, touching it along the best
+ * direction (ell_depth.h), proves the depth (info filled). Tried before the tangent balls: it proves
+ * 96 % of overlapping ellipsoid pairs (the balls 78 %, the shallow ones) at a third of their cost,
+ * and deep overlaps, which the inner polytope proves only with hundreds of points. */
+static int ellipsoid_certified(const cvx *s, const prox_signed_result *r, prox_convex_info *info)
+{
+    if (!prox_ell_pair(&s->a, &s->b)) return 0;
+    return bound_proves(s, r, prox_ell_depth_lower(&s->a, &s->b, s->delta, s->best_d, s->S), info);
+}
+
 /* 1 when the tangent balls at the answer's witnesses prove its depth (info filled). */
 static int ball_certified(const cvx *s, const prox_signed_result *r, prox_convex_info *info)
 {
-    double lb = ball_bound(s, r->normal, r->p1, r->p2);
-    if (!(lb >= s->best_phi - PROX_TOL_DEPTH_CERT * s->S)) return 0;
-    info->lower = fmin(lb, s->best_phi);
-    info->upper = -r->sd;
-    info->certified = 1;
-    return 1;
+    return bound_proves(s, r, ball_bound(s, r->normal, r->p1, r->p2), info);
 }
 
 /* The support point of P for the inner polytope (epa.h); its direction is kept as a candidate. */
@@ -1628,11 +1629,12 @@ static int epa_proves_at(cvx *s, const gjk_out *go, const prox_vec3 *pole, doubl
 static int epa_proves(cvx *s, const gjk_out *go, double *lower) { return epa_proves_at(s, go, NULL, 0.0, lower); }
 
 /* The depth without the global search, from the best of the centre line and the icosahedron's
- * vertices: Newton and the local kinks give the answer, proved by the tangent balls at its
- * witnesses (a shallow contact of smooth or flat parts) or by the inner polytope. A pair with kinks
- * (a rim, an edge: the balls rarely fit there) builds the polytope first, whose support points
- * bring the descent near the deepest direction; a smooth pair tries the balls first. Returns 0 (the
- * best direction left for the global search) when neither proves it. */
+ * vertices: Newton and the local kinks give the answer, proved by the inner ellipsoid (two
+ * ellipsoids, ell_depth.h), by the tangent balls at its witnesses (a shallow contact of smooth or
+ * flat parts) or by the inner polytope. A pair with kinks (a rim, an edge: the balls rarely fit
+ * there) builds the polytope first, whose support points bring the descent near the deepest
+ * direction; a smooth pair tries the ellipsoid and the balls first. Returns 0 (the best direction
+ * left for the global search) when none proves it. */
 static int depth_quick(cvx *s, const gjk_out *go, prox_signed_result *r, prox_convex_info *info)
 {
     if (prox_v3_norm2(s->delta) > 0.0) consider(s, s->delta), consider(s, prox_v3_neg(s->delta));

@@ -900,7 +900,6 @@ void sup_overlap_answer(const prox_body *a, const prox_body *b, prox_vec3 n0, pr
     cand[nc++] = n0;
     double phi0 = phi_eval(&s, n0), best = INFINITY;
     for (int k = 0; k < nc; ++k) {
-        if (k == 1) cand[1] = polish_cell(&s, n0);
         if (fabs(prox_v3_norm(cand[k]) - 1.0) < 0.5) {
             double f = k ? phi_eval(&s, cand[k]) : phi0;
             if (f <= phi0 + PROX_TOL_SNAP * s.scale) { /* a polish may not cost depth */
@@ -914,7 +913,7 @@ void sup_overlap_answer(const prox_body *a, const prox_body *b, prox_vec3 n0, pr
         }
         if (k > 0) continue;
         /* n0 itself not exact: its cell polish, then the ridges and axes it lies on */
-        cand[nc++] = n0; /* replaced by the polish (above) */
+        cand[nc++] = polish_cell(&s, n0);
         prox_vec3 r[6];
         int nr = sup_ridges(a, r);
         nr += sup_ridges(b, r + nr);
