@@ -16,8 +16,8 @@
  *            swapped; the remaining (farthest, farthest) pairs have |p1 - p2|^2 >= |p1 - cB|^2 + rB^2,
  *            and where that bound does not exceed the best (deep overlaps) they are solved too: the
  *            stationary points of the far-point distance (dp_cells_far).
- * Cells are excluded by lower bounds of the circle-circle distance (centres, planes, spheres), then
- * by a certified scan of the rim's angle (dp_cell_may: the normal-cone, value and stationarity
+ * Cells are excluded by lower bounds of the circle-circle distance (centres, planes, spheres), by
+ * chords of phi over the cell's lune of directions (sup_rim_lune_lb), then by a certified scan of the rim's angle (dp_cell_may: the normal-cone, value and stationarity
  * conditions of a cell minimiser, each bounded over an interval by its Lipschitz constant, some
  * also by a bound of their second derivative); only a cell that could beat the best value found so
  * far is solved (degree 8). A cell or case that cannot be settled returns 0 and the caller runs the
@@ -190,6 +190,49 @@ static double dp_circle_lb(const prox_fcircle *a, const prox_fcircle *b, double 
     *far_a = fmax(lb, sqrt(bmin * bmin + a->r * a->r));
     *far_b = fmax(lb, sqrt(amin * amin + b->r * b->r));
     return fmax(lb, 0.0);
+}
+
+/* Upper bound of D.v over the unit D of the lune D.al >= 0, D.be >= 0 (al, be unit; al x be = x, |x|
+ * = nx): |v| when v lies in the lune, else the largest of the boundary arcs' maxima, |P_al v| on the
+ * arc D.al = 0 when that projection has D.be >= 0 (the same with al and be swapped) and |v.x| / nx at
+ * the arcs' ends +-x / nx. Nearly parallel axes (nx < 1/16, where x / nx carries eps / nx) take |v|. */
+static double dp_lune_max(prox_vec3 v, prox_vec3 al, prox_vec3 be, prox_vec3 x, double nx)
+{
+    double va = prox_v3_dot(v, al), vb = prox_v3_dot(v, be);
+    if ((va >= 0.0 && vb >= 0.0) || nx < 0.0625) return prox_v3_norm(v);
+    double m = fabs(prox_v3_dot(v, x)) / nx;
+    prox_vec3 pa = prox_v3_mad(v, -va, al), pb = prox_v3_mad(v, -vb, be);
+    if (prox_v3_dot(pa, be) >= 0.0) m = fmax(m, prox_v3_norm(pa));
+    if (prox_v3_dot(pb, al) >= 0.0) m = fmax(m, prox_v3_norm(pb));
+    return m;
+}
+
+/* Lower bound of phi over the directions of the cell of A's rim ca (end ea) and B's rim cb (end eb).
+ * There A's support lies on rim ea and B's (in -D) on rim eb, so D lies in the lune D.al >= 0, D.be
+ * >= 0 (al = ea wA, be = -eb wB) and phi(D) = rA g(D.al) + rB g(D.be) - D.m, g(t) = sqrt(1 - t^2),
+ * m = cb.c - ca.c (the end terms hh|D.w| join Delta into the rim centres). Over the lune D.al and
+ * D.be range over [0, top], top = 1 when al.be >= 0 (al lies in the lune) and |P_be al| = sqrt(1 -
+ * (al.be)^2) otherwise (1 again for a lune too thin to take its width from rounded cosines). g is concave there, so it is at least the smaller of its chords over [0, k top]
+ * and [k top, top] (k = 3/4); each choice of chords for the two terms makes phi >= c0 - D.v with v =
+ * m - rA s_a al - rB s_b be (s the chords' slopes), whose minimum over the lune is c0 minus
+ * dp_lune_max. The bound is the least of the four. Rounding (a few eps (|m| + rA + rB)) stays far
+ * below the PROX_TOL_SEARCH x S margin of the cut it is compared with. */
+double sup_rim_lune_lb(const prox_fcircle *ca, prox_vec3 al, const prox_fcircle *cb, prox_vec3 be)
+{
+    prox_vec3 m = prox_v3_sub(cb->c, ca->c), x = prox_v3_cross(al, be);
+    double c = prox_v3_dot(al, be), nx = prox_v3_norm(x);
+    double top = c >= 0.0 || !(1.0 - c * c > 1e-6) ? 1.0 : sqrt(1.0 - c * c); /* [0, 1] holds any range */
+    double t[3] = {0.0, 0.75 * top, top}, g[3], sl[2];
+    for (int i = 0; i < 3; ++i) g[i] = sqrt(1.0 - t[i] * t[i]);
+    for (int i = 0; i < 2; ++i) sl[i] = (g[i + 1] - g[i]) / (t[i + 1] - t[i]);
+    double lb = INFINITY;
+    for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j) {
+            double c0 = ca->r * (g[i] - sl[i] * t[i]) + cb->r * (g[j] - sl[j] * t[j]);
+            prox_vec3 v = prox_v3_mad(prox_v3_mad(m, -ca->r * sl[i], al), -cb->r * sl[j], be);
+            lb = fmin(lb, c0 - dp_lune_max(v, al, be, x, nx));
+        }
+    return lb;
 }
 
 /* The core's circle-circle stationary angles (Agarwal Sec. 3.5, degree 8): 0 solved, 1 degenerate
@@ -441,6 +484,7 @@ int sup_rcc_depth_enum(const prox_body *a, const prox_body *b, prox_signed_resul
         /* A's point on rim ea, B's on rim eb: each must reach the other's corner band */
         double tol = PROX_TOL_SEARCH * scale;
         if (!dp_reach(&cb, a, ea, s.best, tol) || !dp_reach(&ca, b, eb, s.best, tol)) continue;
+        if (sup_rim_lune_lb(&ca, prox_v3_scale(a->cyl.w, (double)ea), &cb, prox_v3_scale(b->cyl.w, (double)-eb)) > cut) continue;
         /* pairs with p2 closest on B's rim to p1: stationary points on A's rim (one degree-8
          * solve); with p1 closest on A's rim: on B's rim. The rest has p1 farthest (>= far_a)
          * or p2 farthest (>= far_b): one solve suffices when either bound exceeds the best;

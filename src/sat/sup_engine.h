@@ -66,6 +66,12 @@ int sup_poly_curved_depth_enum(const prox_body *a, const prox_body *b, prox_sign
  * best direction found (a valid upper bound). */
 int sup_rcc_depth_enum(const prox_body *a, const prox_body *b, prox_signed_result *res);
 
+/* Lower bound of phi over the directions of one rim-rim cell of two cylinders (rcc_depth.c): A's
+ * support on rim circle ca and B's (in -D) on rim circle cb, i.e. D in the lune D.al >= 0, D.be >= 0
+ * with al = e_A w_A and be = -e_B w_B (e the rims' ends). Chords of the concave radial terms make it a
+ * minimum of linear functions over the lune, each minimised exactly. */
+double sup_rim_lune_lb(const prox_fcircle *ca, prox_vec3 al, const prox_fcircle *cb, prox_vec3 be);
+
 /* Signed distance of two bodies (see the file comment); status is always PROX_OK. hint (may be
  * NULL): a direction to try first, e.g. a separating direction from the SAT. */
 prox_signed_result sup_signed_distance(const prox_body *a, const prox_body *b, const prox_vec3 *hint);
