@@ -125,6 +125,7 @@ static int dp_reach(const prox_fcircle *c, const prox_body *k, int e, double cut
  * w. 0 when degenerate. */
 static int dp_ridge(dp_state *s, const prox_body *lat, const prox_body *rim, const prox_fcircle rr[2], double tol)
 {
+    if (sup_ridge_shadow_lb(lat, rim, s->delta) > s->best + tol) return 1;
     prox_vec3 w = lat->cyl.w;
     int need[2];
     for (int e = -1; e <= 1; e += 2) {

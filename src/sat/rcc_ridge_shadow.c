@@ -218,3 +218,22 @@ int sup_ridge_shadow_min(const prox_body *lat, const prox_body *oth, prox_vec3 d
 {
     return ridge_shadow(lat, oth, delta, out, max, 1);
 }
+
+/* Lower bound of phi over the ridge D.w = 0 of cylinder `lat` (radius r): r minus an upper bound of
+ * the distance from delta's shadow to Q = E + [-d, d] (the minimum is r minus that distance, or plus
+ * delta's depth in Q). E + t d lies in Q for |t| <= 1, so the distance is at most that from
+ * y = delta - t d, t the point of [-1, 1] nearest to delta along d, to E along the ray from E's
+ * centre: |y| (1 - 1 / k), k = |(y0 / a, y1 / b)|, when k > 1, else 0. Parallel axes (no frame) take
+ * the disk of radius b inside Q: at most |delta| - b. */
+double sup_ridge_shadow_lb(const struct prox_body *lat, const struct prox_body *oth, prox_vec3 delta)
+{
+    prox_vec3 w = lat->cyl.w, x = prox_v3_cross(w, oth->cyl.w);
+    double a = oth->cyl.r, b = a * fabs(prox_v3_dot(w, oth->cyl.w)), xn = prox_v3_norm(x);
+    if (!(xn > PROX_TOL_PARALLEL) || !(b > 0.0)) return lat->cyl.r + b - prox_v3_norm(prox_v3_reject(delta, w));
+    prox_vec3 e1 = prox_v3_scale(x, 1.0 / xn), e2 = prox_v3_cross(w, e1);
+    double d2 = oth->cyl.hh * prox_v3_dot(oth->cyl.w, e2), y0 = prox_v3_dot(delta, e1), y1 = prox_v3_dot(delta, e2);
+    double t = d2 != 0.0 ? fmax(-1.0, fmin(1.0, y1 / d2)) : 0.0;
+    y1 -= t * d2;
+    double k = prox_hypot2(y0 / a, y1 / b);
+    return k <= 1.0 ? lat->cyl.r : lat->cyl.r - prox_hypot2(y0, y1) * (1.0 - 1.0 / k);
+}

@@ -73,4 +73,9 @@ struct prox_body;
 int sup_ridge_shadow_min(const struct prox_body *lat, const struct prox_body *oth, prox_vec3 delta, prox_vec3 *out,
                          int max);
 
+/* Lower bound of phi over the ridge D.w = 0 of `lat` (rcc_ridge_shadow.c): r minus an upper bound of
+ * the distance from delta's shadow to the other cylinder's shadow. The depth enumeration skips a
+ * ridge whose bound exceeds its best value. */
+double sup_ridge_shadow_lb(const struct prox_body *lat, const struct prox_body *oth, prox_vec3 delta);
+
 #endif

@@ -1,14 +1,18 @@
-/* The lower bound of the depth function over one rim-rim cell of two cylinders (sup_rim_lune_lb,
- * src/sat/rcc_depth.c), which lets the depth skip a cell's scan and degree-8 solve. On its lune of
- * directions (D.al >= 0, D.be >= 0) phi(D) = hc_A(D) + hc_B(D) - D.Delta must never fall below the
- * bound: random pairs of cylinders (radii and heights 0.5..10, centres up to 14 apart, any axes,
- * including parallel and antiparallel ones), every cell, phi sampled over the lune and along its
- * boundary arcs and corners. The bound must also be worth its cost: close to the sampled minimum on
- * some cells (a bound a few percent too high would exceed it there) and above the depth on most of
- * the cells of overlapping pairs, which is what makes it skip them. */
+/* The lower bounds of the depth function phi(D) = hc_A(D) + hc_B(D) - D.Delta over the strata of two
+ * cylinders that let the depth's enumeration (src/sat/rcc_depth.c) skip a stratum's solve.
+ * - A rim-rim cell (sup_rim_lune_lb): on its lune of directions (D.al >= 0, D.be >= 0) phi must never
+ *   fall below the bound. Random pairs of cylinders (radii and heights 0.5..10, centres up to 14
+ *   apart, any axes, parallel and antiparallel ones among them), every cell, phi sampled over the
+ *   lune and along its boundary arcs and corners.
+ * - A ridge D.w = 0 (sup_ridge_shadow_lb): phi sampled around the ridge's great circle, for both
+ *   cylinders of the same pairs, never below the bound.
+ * Each bound must also be worth its cost: close to the sampled minimum on some strata (a bound a few
+ * percent too high would exceed it there), and for the cells above the depth on most of the cells of
+ * overlapping pairs, which is what makes the enumeration skip them. */
 #include "test_util.h"
 
 #include "core/body.h"
+#include "sat/sat_internal.h"
 #include "sat/sup_engine.h"
 
 static prox_body random_cyl(test_rng *g, prox_vec3 c, prox_vec3 w)
@@ -81,6 +85,46 @@ static void test_bound_below_phi(void **state)
     assert_true(tight >= 10);
 }
 
+/* phi around the ridge D.w = 0 of `lat` never falls below its bound; returns the least value found. */
+static double ridge_min(const prox_body *lat, const prox_body *a, const prox_body *b)
+{
+    prox_vec3 e1 = prox_v3_any_perp(lat->cyl.w), e2 = prox_v3_cross(lat->cyl.w, e1);
+    double m = INFINITY;
+    for (int k = 0; k < 20000; ++k) {
+        double t = 2.0 * PROX_PI * k / 20000.0;
+        m = fmin(m, phi(a, b, prox_v3_add(prox_v3_scale(e1, cos(t)), prox_v3_scale(e2, sin(t)))));
+    }
+    return m;
+}
+
+static void test_ridge_bound_below_phi(void **state)
+{
+    (void)state;
+    test_rng g = test_rng_seed(2031);
+    int ridges = 0, tight = 0;
+    double worst = -INFINITY;
+    for (int i = 0; i < 300; ++i) {
+        prox_vec3 wa = test_unit(&g), wb = test_unit(&g);
+        if (i % 10 == 0) wb = i % 20 == 0 ? wa : prox_v3_neg(wa); /* parallel and antiparallel axes */
+        if (i % 10 == 5) wb = prox_v3_any_perp(wa);               /* a needle shadow */
+        prox_body a = random_cyl(&g, prox_v3(0, 0, 0), wa);
+        prox_body b = random_cyl(&g, prox_v3_scale(test_unit(&g), test_range(&g, 0.0, 14.0)), wb);
+        double S = fmax(prox_v3_dist(a.c, b.c), fmax(a.size, b.size));
+        prox_vec3 delta = prox_v3_sub(b.c, a.c);
+        for (int k = 0; k < 2; ++k) {
+            const prox_body *lat = k ? &b : &a, *oth = k ? &a : &b;
+            double lb = sup_ridge_shadow_lb(lat, oth, k ? prox_v3_neg(delta) : delta), m = ridge_min(lat, &a, &b);
+            ++ridges;
+            worst = fmax(worst, (lb - m) / S);
+            if (lb > m + 1e-12 * S) print_error("pair %d ridge %d: bound %.17g above phi %.17g on it\n", i, k, lb, m);
+            if (lb > 0.0 && lb >= 0.97 * m) ++tight;
+        }
+    }
+    print_message("# %d ridges: bound - sampled minimum at most %.2e S; within 3 %% of it on %d\n", ridges, worst, tight);
+    assert_true(worst <= 1e-12);
+    assert_true(tight >= 10);
+}
+
 /* On overlapping pairs the bound is compared with the depth: a cell whose bound exceeds it holds no
  * minimiser, and the depth's enumeration skips it. Most cells of the bench-like pairs must be so. */
 static void test_bound_skips_cells(void **state)
@@ -114,6 +158,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_bound_below_phi),
         cmocka_unit_test(test_bound_skips_cells),
+        cmocka_unit_test(test_ridge_bound_below_phi),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
