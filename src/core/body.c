@@ -21,6 +21,15 @@ static prox_cyl cyl_centred(const prox_rcc *c)
     return k;
 }
 
+void prox_body_make_cyl(const prox_rcc *c, prox_body *b)
+{
+    memset(b, 0, offsetof(prox_body, x));
+    b->kind = PROX_BODY_CYL;
+    b->c = prox_rcc_center(c);
+    b->cyl = cyl_centred(c);
+    b->size = fmax(b->cyl.h, 2.0 * b->cyl.r);
+}
+
 prox_body prox_body_of_polytope(const prox_polytope *p, prox_vec3 c)
 {
     prox_body b = {0};
@@ -35,12 +44,7 @@ prox_body prox_body_make(const prox_shape *s)
 {
     prox_body b = {0};
     switch (s->kind) {
-    case PROX_SHAPE_RCC:
-        b.kind = PROX_BODY_CYL;
-        b.c = prox_rcc_center(&s->u.rcc);
-        b.cyl = cyl_centred(&s->u.rcc);
-        b.size = fmax(b.cyl.h, 2.0 * b.cyl.r);
-        break;
+    case PROX_SHAPE_RCC: prox_body_make_cyl(&s->u.rcc, &b); break;
     case PROX_SHAPE_BOX:
     case PROX_SHAPE_RPP: {
         prox_box bx = s->kind == PROX_SHAPE_BOX ? s->u.box : prox_rpp_to_box(&s->u.rpp);

@@ -53,6 +53,10 @@ static inline int prox_body_symmetric(const prox_body *b) { return b->kind <= PR
 /* The body of a valid shape (validate first: this is the hot path of the generic queries). */
 prox_body prox_body_make(const prox_shape *s);
 
+/* The body of a valid cylinder written in place, only the fields a PROX_BODY_CYL uses (the head up
+ * to the added kinds' union): the depth's hot path builds two for every pair. */
+void prox_body_make_cyl(const prox_rcc *c, prox_body *b);
+
 /* The body of a polytope already built (prox_polytope_make or prox_polytope_checked), reference
  * point c. */
 prox_body prox_body_of_polytope(const prox_polytope *p, prox_vec3 c);

@@ -19,8 +19,9 @@ static void polish_disjoint(const prox_rcc *a, const prox_rcc *b, double d, prox
     prox_rcc ra = *a, rb = *b;
     ra.base = prox_v3(0, 0, 0);
     rb.base = prox_v3_sub(b->base, o);
-    prox_shape sa = prox_shape_from_rcc(ra), sb = prox_shape_from_rcc(rb);
-    prox_body ba = prox_body_make(&sa), bb = prox_body_make(&sb);
+    prox_body ba, bb;
+    prox_body_make_cyl(&ra, &ba);
+    prox_body_make_cyl(&rb, &bb);
     prox_vec3 x = prox_v3_sub(*p1, o), y = prox_v3_sub(*p2, o);
     double e = fabs(prox_v3_dist(x, y) - d);
     for (int it = 0; it < 8; ++it) {

@@ -35,9 +35,8 @@ static void pair_bodies(const prox_rcc *a, const prox_rcc *b, prox_body *ba, pro
     prox_rcc ra = *a, rb = *b;
     ra.base = prox_v3(0, 0, 0);
     rb.base = prox_v3_sub(b->base, a->base);
-    prox_shape sa = prox_shape_from_rcc(ra), sb = prox_shape_from_rcc(rb);
-    *ba = prox_body_make(&sa);
-    *bb = prox_body_make(&sb);
+    prox_body_make_cyl(&ra, ba);
+    prox_body_make_cyl(&rb, bb);
     *f = prox_unit_scale(fmax(prox_v3_dist(ba->c, bb->c), fmax(fmax(ba->cyl.h, bb->cyl.h), fmax(ba->cyl.r, bb->cyl.r))));
     body_scale(ba, *f);
     body_scale(bb, *f);
