@@ -42,7 +42,7 @@ typedef struct bd_state {
     prox_vec3 best_d;
 } bd_state;
 
-/* |(x, y)| without hypot's guards: the pair is at unit scale (prox_sat_box_rcc_depth), where no
+/* |(x, y)| without hypot's guards: the pair is at unit scale (prox_sat_box_rcc_depth_bounded), where no
  * square can overflow or underflow. */
 static inline double bd_len(double x, double y) { return sqrt(x * x + y * y); }
 
@@ -345,9 +345,10 @@ static void bd_bodies(const prox_box *a, const prox_rcc *b, prox_body *ba, prox_
     bb->size *= *f;
 }
 
-prox_signed_result prox_sat_box_rcc_depth(const prox_box *a, const prox_rcc *b)
+prox_signed_result prox_sat_box_rcc_depth_bounded(const prox_box *a, const prox_rcc *b, int *bounded)
 {
     prox_signed_result r = {0};
+    *bounded = 0;
     if (!a || !b) { r.status = PROX_EINVAL_ARG; return r; }
     if ((r.status = prox_box_validate(a)) != PROX_OK || (r.status = prox_rcc_validate(b)) != PROX_OK) return r;
     prox_body ba, bb;
@@ -358,7 +359,15 @@ prox_signed_result prox_sat_box_rcc_depth(const prox_box *a, const prox_rcc *b)
         atomic_fetch_add_explicit(&g_box_depth_fallbacks, 1, memory_order_relaxed);
         r = sup_signed_distance(&ba, &bb, NULL);
     }
+    /* an overlapping answer's enclosure depends on the pair only through centre differences,
+     * support functions and sizes: the scaled, relative bodies give it, scaled back below */
+    if (r.status == PROX_OK && r.sd <= 0.0) {
+        prox_body_signed_bounds(&ba, &bb, &r);
+        *bounded = 1;
+    }
     r.sd /= f;
+    r.sd_lower /= f;
+    r.sd_upper /= f;
     r.p1 = prox_v3_mad(o, 1.0 / f, r.p1);
     r.p2 = prox_v3_mad(o, 1.0 / f, r.p2);
     return r;

@@ -43,11 +43,12 @@ prox_signed_result prox_sat_rcc_depth(const prox_rcc *a, const prox_rcc *b);
 prox_signed_result prox_sat_rcc_depth_bounded(const prox_rcc *a, const prox_rcc *b, int *bounded);
 
 /* Penetration depth of a box and a cylinder known to overlap: the closed-form enumeration of
- * box_rcc_depth.c, the global search of sup_engine.c for a degenerate pose (counted below).
+ * box_rcc_depth.c, the global search of sup_engine.c for a degenerate pose (counted below), with the
+ * proved enclosure of an overlapping answer as prox_sat_rcc_depth_bounded (*bounded = 1 when set).
  * Validates both. */
-prox_signed_result prox_sat_box_rcc_depth(const prox_box *a, const prox_rcc *b);
+prox_signed_result prox_sat_box_rcc_depth_bounded(const prox_box *a, const prox_rcc *b, int *bounded);
 
-/* How many overlapping box-cylinder pairs since start-up prox_sat_box_rcc_depth handed to the
+/* How many overlapping box-cylinder pairs since start-up prox_sat_box_rcc_depth_bounded handed to the
  * global search. */
 unsigned long long prox_sat_box_depth_fallbacks(void);
 
