@@ -57,6 +57,7 @@ static int rcc_holds(const prox_rcc *b, prox_vec3 x)
  * it (so does the distance otherwise: bad input gets its status either way). */
 static int evident_common(const prox_box *a, const prox_rcc *b)
 {
+    if (!a || !b) return 0; /* the solvers report it */
     prox_vec3 ca = prox_v3_mad(a->corner, 0.5, prox_v3_add(a->edge[0], prox_v3_add(a->edge[1], a->edge[2])));
     prox_vec3 cb = prox_v3_mad(b->base, 0.5, b->axis), mid = prox_v3_scale(prox_v3_add(ca, cb), 0.5);
     return rcc_holds(b, ca) || box_holds(a, cb) || (box_holds(a, mid) && rcc_holds(b, mid));

@@ -62,6 +62,7 @@ static int rcc_holds(const prox_rcc *k, prox_vec3 o, prox_vec3 x)
  * the pair (so does the distance otherwise: bad input gets its status either way). */
 static int evident_common(const prox_rcc *a, const prox_rcc *b)
 {
+    if (!a || !b) return 0; /* the solvers report it */
     prox_vec3 o = a->base, ca = prox_v3_scale(a->axis, 0.5), cb = prox_v3_mad(prox_v3_sub(b->base, o), 0.5, b->axis);
     prox_vec3 mid = prox_v3_scale(prox_v3_add(ca, cb), 0.5);
     return rcc_holds(b, o, ca) || rcc_holds(a, o, cb) || (rcc_holds(a, o, mid) && rcc_holds(b, o, mid));
