@@ -26,6 +26,7 @@
 #include "sup_engine.h"
 
 #include "core/circle.h"
+#include "core/minmax.h"
 #include "core/tol.h"
 
 #include <float.h>
@@ -68,70 +69,63 @@ static prox_vec3 dp_tangent(const prox_fcircle *c, prox_vec3 p)
     return prox_v3_cross(c->n, prox_v3_sub(p, c->c));
 }
 
-/* Lower bound of phi at a minimiser on the ridge of `lat` whose other support point q lies on rim
- * circle c: phi = |p2 - p1| with p1 = q's partner on lat's support segment (radius r from the axis,
- * |axial offset| <= hh). The rim projects off the axis onto an ellipse centred at the projected
- * centre with semi-axes <= r_c, and along the axis onto an interval of half length r_c |w x n_c|. */
-static double dp_ridge_lb(const prox_fcircle *c, const prox_body *lat)
+/* Where the rim circle c lies seen from the other cylinder k: its axial coordinate (q - c_k).w over
+ * its points q in [zlo, zhi] (the centre's value +- r_c |w x n_c|), its distance from k's axis in
+ * [rlo, rhi] (the centre's rho -+ r_c: the rim projects off the axis onto an ellipse of semi-axes
+ * <= r_c; rlo may be negative). Each rim is seen once from the other cylinder, for its ridge and its
+ * cells. */
+typedef struct dp_band {
+    double zlo, zhi, rlo, rhi;
+} dp_band;
+
+static dp_band dp_band_of(const prox_fcircle *c, const prox_body *k)
+{
+    prox_vec3 d = prox_v3_sub(c->c, k->c);
+    double z = prox_v3_dot(d, k->cyl.w), sp = c->r * prox_v3_norm(prox_v3_cross(k->cyl.w, c->n));
+    double rho = prox_v3_norm(prox_v3_reject(d, k->cyl.w));
+    return (dp_band){z - sp, z + sp, rho - c->r, rho + c->r};
+}
+
+/* Lower bound of phi at a minimiser on the ridge of `lat` (radius r, half height hh) whose other
+ * support point q lies on the rim of band g: phi = |p2 - p1| with p1 = q's partner on lat's support
+ * segment (radius r from the axis, |axial offset| <= hh). */
+static double dp_ridge_lb(const dp_band *g, const prox_body *lat)
 {
     const prox_cyl *k = &lat->cyl;
-    prox_vec3 d = prox_v3_sub(c->c, lat->c);
-    double ax = prox_v3_dot(d, k->w), rho = prox_v3_norm(prox_v3_reject(d, k->w));
-    double lb = fmax(rho - c->r - k->r, k->r - rho - c->r);
-    lb = fmax(lb, fabs(ax) - c->r * prox_v3_norm(prox_v3_cross(k->w, c->n)) - k->hh);
-    return fmax(lb, 0.0);
-}
-
-/* Range [*lo, *hi] of the axial coordinate (q - k.c).w over the points q of circle c (k's axis w):
- * the centre's value +- r |w x n_c|. */
-static void dp_axial_range(const prox_fcircle *c, const prox_body *k, double *lo, double *hi)
-{
-    double z = prox_v3_dot(prox_v3_sub(c->c, k->c), k->cyl.w), sp = c->r * prox_v3_norm(prox_v3_cross(k->cyl.w, c->n));
-    *lo = z - sp;
-    *hi = z + sp;
-}
-
-/* Range [*lo, *hi] (bounds) of the distance from k's axis line over the points of circle c: the
- * centre's distance rho_c -+ r (the rim projects off the axis onto an ellipse of semi-axes <= r). */
-static void dp_radial_range(const prox_fcircle *c, const prox_body *k, double *lo, double *hi)
-{
-    double rho = prox_v3_norm(prox_v3_reject(prox_v3_sub(c->c, k->c), k->cyl.w));
-    *lo = fmax(0.0, rho - c->r);
-    *hi = rho + c->r;
+    double lb = prox_max2(g->rlo - k->r, k->r - g->rhi);
+    lb = prox_max2(lb, prox_max2(g->zlo, -g->zhi) - k->hh);
+    return prox_max2(lb, 0.0);
 }
 
 /* Necessary condition for a minimiser with value phi <= cut whose support point p on body k is a
  * point of k's lateral line (e = 0: D.w = 0) or of k's rim at end e (+-1), and whose other support
- * point q lies on circle c. With D = alpha e w + beta u (u radial at p, alpha, beta >= 0, unit; alpha
- * = 0 on the lateral line) and q = p - phi D (p2 - p1 = sd D for A's point p, the mirror for B's):
+ * point q lies on the rim of band g. With D = alpha e w + beta u (u radial at p, alpha, beta >= 0,
+ * unit; alpha = 0 on the lateral line) and q = p - phi D (p2 - p1 = sd D for A's point p, the mirror
+ * for B's):
  *   axial coordinate of q:  e (q - c_k).w = hh - phi alpha, in [hh - cut, hh] (rim), in [-hh, hh] (lateral);
  *   distance of q from k's axis: |r - phi beta|, in [max(0, r - cut), max(r, cut - r)].
- * 0 when circle c has no point in both ranges (the stratum holds no minimiser at or below cut). */
-static int dp_reach(const prox_fcircle *c, const prox_body *k, int e, double cut, double tol)
+ * 0 when the rim has no point in both ranges (the stratum holds no minimiser at or below cut). */
+static int dp_reach(const dp_band *g, const prox_body *k, int e, double cut, double tol)
 {
-    double lo, hi, r = k->cyl.r, hh = k->cyl.hh;
-    dp_axial_range(c, k, &lo, &hi);
+    double r = k->cyl.r, hh = k->cyl.hh;
     if (e != 0) {
-        double l = e > 0 ? lo : -hi, h = e > 0 ? hi : -lo; /* range of e (q - c_k).w */
+        double l = e > 0 ? g->zlo : -g->zhi, h = e > 0 ? g->zhi : -g->zlo; /* range of e (q - c_k).w */
         if (l > hh + tol || h < hh - cut - tol) return 0;
-    } else if (lo > hh + tol || hi < -hh - tol)
+    } else if (g->zlo > hh + tol || g->zhi < -hh - tol)
         return 0;
-    dp_radial_range(c, k, &lo, &hi);
-    return !(lo > fmax(r, cut - r) + tol || hi < r - cut - tol);
+    return !(prox_max2(0.0, g->rlo) > prox_max2(r, cut - r) + tol || g->rhi < r - cut - tol);
 }
 
 /* Ridge D.w = 0 of cylinder `lat` (its lateral line) against the rims rr[0] (bottom), rr[1] (top) of
- * `rim`: every stationary point q of dist^2(rim, axis of lat) gives D = +-(q - c_lat) projected off
+ * `rim` (gr: their bands seen from lat): every stationary point q of dist^2(rim, axis of lat) gives D = +-(q - c_lat) projected off
  * w. 0 when degenerate. */
-static int dp_ridge(dp_state *s, const prox_body *lat, const prox_body *rim, const prox_fcircle rr[2], double tol)
+static int dp_ridge(dp_state *s, const prox_body *lat, const prox_body *rim, const prox_fcircle rr[2], const dp_band gr[2],
+                    double tol)
 {
     if (sup_ridge_shadow_lb(lat, rim, s->delta) > s->best + tol) return 1;
     prox_vec3 w = lat->cyl.w;
     int need[2];
-    for (int e = -1; e <= 1; e += 2) {
-        prox_fcircle c = rr[(e + 1) / 2];
-        need[(e + 1) / 2] = !(dp_ridge_lb(&c, lat) > s->best + tol || !dp_reach(&c, lat, 0, s->best, tol));
-    }
+    for (int i = 0; i < 2; ++i) need[i] = !(dp_ridge_lb(&gr[i], lat) > s->best + tol || !dp_reach(&gr[i], lat, 0, s->best, tol));
     if (!need[0] && !need[1]) return 1;
     /* the whole ridge in its plane (rcc_ridge_shadow.c: its minimiser is among the candidates); the
      * rims' quartics when it is degenerate */
@@ -168,7 +162,7 @@ static void dp_circle_range(const prox_fcircle *c, prox_vec3 x, double *dmin, do
 {
     prox_vec3 d = prox_v3_sub(c->c, x);
     double dd = prox_v3_norm2(d), pd = prox_v3_norm(prox_v3_reject(d, c->n));
-    *dmin = sqrt(fmax(0.0, dd + c->r * c->r - 2.0 * c->r * pd));
+    *dmin = sqrt(prox_max2(0.0, dd + c->r * c->r - 2.0 * c->r * pd));
     *dmax = sqrt(dd + c->r * c->r + 2.0 * c->r * pd);
 }
 
@@ -181,16 +175,16 @@ static double dp_circle_lb(const prox_fcircle *a, const prox_fcircle *b, double 
     prox_vec3 d = prox_v3_sub(a->c, b->c);
     double lb = prox_v3_norm(d) - a->r - b->r;
     double sn = prox_v3_norm(prox_v3_cross(a->n, b->n));
-    lb = fmax(lb, fabs(prox_v3_dot(b->n, d)) - a->r * sn);
-    lb = fmax(lb, fabs(prox_v3_dot(a->n, d)) - b->r * sn);
+    lb = prox_max2(lb, fabs(prox_v3_dot(b->n, d)) - a->r * sn);
+    lb = prox_max2(lb, fabs(prox_v3_dot(a->n, d)) - b->r * sn);
     double amin, amax, bmin, bmax;
     dp_circle_range(a, b->c, &amin, &amax);
     dp_circle_range(b, a->c, &bmin, &bmax);
-    lb = fmax(lb, fmax(amin - b->r, b->r - amax));
-    lb = fmax(lb, fmax(bmin - a->r, a->r - bmax));
-    *far_a = fmax(lb, sqrt(bmin * bmin + a->r * a->r));
-    *far_b = fmax(lb, sqrt(amin * amin + b->r * b->r));
-    return fmax(lb, 0.0);
+    lb = prox_max2(lb, prox_max2(amin - b->r, b->r - amax));
+    lb = prox_max2(lb, prox_max2(bmin - a->r, a->r - bmax));
+    *far_a = prox_max2(lb, sqrt(bmin * bmin + a->r * a->r));
+    *far_b = prox_max2(lb, sqrt(amin * amin + b->r * b->r));
+    return prox_max2(lb, 0.0);
 }
 
 /* Upper bound of D.v over the unit D of the lune D.al >= 0, D.be >= 0 (al, be unit; al x be = x, |x|
@@ -203,8 +197,8 @@ static double dp_lune_max(prox_vec3 v, prox_vec3 al, prox_vec3 be, prox_vec3 x, 
     if ((va >= 0.0 && vb >= 0.0) || nx < 0.0625) return prox_v3_norm(v);
     double m = fabs(prox_v3_dot(v, x)) / nx;
     prox_vec3 pa = prox_v3_mad(v, -va, al), pb = prox_v3_mad(v, -vb, be);
-    if (prox_v3_dot(pa, be) >= 0.0) m = fmax(m, prox_v3_norm(pa));
-    if (prox_v3_dot(pb, al) >= 0.0) m = fmax(m, prox_v3_norm(pb));
+    if (prox_v3_dot(pa, be) >= 0.0) m = prox_max2(m, prox_v3_norm(pa));
+    if (prox_v3_dot(pb, al) >= 0.0) m = prox_max2(m, prox_v3_norm(pb));
     return m;
 }
 
@@ -231,7 +225,7 @@ double sup_rim_lune_lb(const prox_fcircle *ca, prox_vec3 al, const prox_fcircle 
         for (int j = 0; j < 2; ++j) {
             double c0 = ca->r * (g[i] - sl[i] * t[i]) + cb->r * (g[j] - sl[j] * t[j]);
             prox_vec3 v = prox_v3_mad(prox_v3_mad(m, -ca->r * sl[i], al), -cb->r * sl[j], be);
-            lb = fmin(lb, c0 - dp_lune_max(v, al, be, x, nx));
+            lb = prox_min2(lb, c0 - dp_lune_max(v, al, be, x, nx));
         }
     return lb;
 }
@@ -453,7 +447,7 @@ int sup_rcc_depth_enum(const prox_body *a, const prox_body *b, prox_signed_resul
 {
     dp_state s = {.a = a, .b = b, .delta = prox_v3_sub(b->c, a->c), .best = INFINITY};
     s.best_d = a->cyl.w;
-    double scale = fmax(prox_v3_norm(s.delta), fmax(a->size, b->size));
+    double scale = prox_max2(prox_v3_norm(s.delta), prox_max2(a->size, b->size));
     int ok = 1;
     /* points */
     dp_consider_pm(&s, a->cyl.w);
@@ -461,8 +455,9 @@ int sup_rcc_depth_enum(const prox_body *a, const prox_body *b, prox_signed_resul
     dp_consider_pm(&s, prox_v3_cross(a->cyl.w, b->cyl.w));
     /* ridges */
     prox_fcircle ra[2] = {dp_rim(a, -1), dp_rim(a, 1)}, rb[2] = {dp_rim(b, -1), dp_rim(b, 1)}; /* bottom, top */
-    ok = dp_ridge(&s, a, b, rb, PROX_TOL_SEARCH * scale) && ok;
-    ok = dp_ridge(&s, b, a, ra, PROX_TOL_SEARCH * scale) && ok;
+    dp_band ga[2] = {dp_band_of(&ra[0], b), dp_band_of(&ra[1], b)}, gb[2] = {dp_band_of(&rb[0], a), dp_band_of(&rb[1], a)};
+    ok = dp_ridge(&s, a, b, rb, gb, PROX_TOL_SEARCH * scale) && ok;
+    ok = dp_ridge(&s, b, a, ra, ga, PROX_TOL_SEARCH * scale) && ok;
     /* cells: rim of A at end ea against rim of B at end eb, the lowest bound first (a deep overlap's
      * best cell then excludes the others) */
     prox_fcircle rims[4][2];
@@ -484,7 +479,7 @@ int sup_rcc_depth_enum(const prox_body *a, const prox_body *b, prox_signed_resul
         if (lb > cut) continue;
         /* A's point on rim ea, B's on rim eb: each must reach the other's corner band */
         double tol = PROX_TOL_SEARCH * scale;
-        if (!dp_reach(&cb, a, ea, s.best, tol) || !dp_reach(&ca, b, eb, s.best, tol)) continue;
+        if (!dp_reach(&gb[(eb + 1) / 2], a, ea, s.best, tol) || !dp_reach(&ga[(ea + 1) / 2], b, eb, s.best, tol)) continue;
         if (sup_rim_lune_lb(&ca, prox_v3_scale(a->cyl.w, (double)ea), &cb, prox_v3_scale(b->cyl.w, (double)-eb)) > cut) continue;
         /* pairs with p2 closest on B's rim to p1: stationary points on A's rim (one degree-8
          * solve); with p1 closest on A's rim: on B's rim. The rest has p1 farthest (>= far_a)
