@@ -17,10 +17,12 @@
  *            and where that bound does not exceed the best (deep overlaps) they are solved too: the
  *            stationary points of the far-point distance (dp_cells_far).
  * Cells are excluded by lower bounds of the circle-circle distance (centres, planes, spheres), by
- * chords of phi over the cell's lune of directions (sup_rim_lune_lb), then by a certified scan of the rim's angle (dp_cell_may: the normal-cone, value and stationarity
- * conditions of a cell minimiser, each bounded over an interval by its Lipschitz constant, some
- * also by a bound of their second derivative); only a cell that could beat the best value found so
- * far is solved (degree 8). A cell or case that cannot be settled returns 0 and the caller runs the
+ * chords of phi over the cell's lune of directions (sup_rim_lune_lb), then by a certified scan of
+ * the rim's angle (dp_cell_may: the normal-cone, value and stationarity conditions of a cell
+ * minimiser, each bounded over an interval by its Lipschitz constant, some also by a bound of their
+ * second derivative). Where the scan proves the stationarity strictly monotone its one root is
+ * solved on the interval (dp_cell_roots); only a cell with an interval the scan cannot settle is
+ * solved whole (degree 8). A cell or case that cannot be settled returns 0 and the caller runs the
  * global search of sup_engine.c. */
 #include "sat_internal.h"
 #include "sup_engine.h"
@@ -117,15 +119,16 @@ static int dp_reach(const dp_band *g, const prox_body *k, int e, double cut, dou
 }
 
 /* Ridge D.w = 0 of cylinder `lat` (its lateral line) against the rims rr[0] (bottom), rr[1] (top) of
- * `rim` (gr: their bands seen from lat): every stationary point q of dist^2(rim, axis of lat) gives D = +-(q - c_lat) projected off
- * w. 0 when degenerate. */
-static int dp_ridge(dp_state *s, const prox_body *lat, const prox_body *rim, const prox_fcircle rr[2], const dp_band gr[2],
-                    double tol)
+ * `rim` (gr: their bands seen from lat): every stationary point q of dist^2(rim, axis of lat) gives
+ * D = +-(q - c_lat) projected off w. 0 when degenerate. */
+static int dp_ridge(dp_state *s, const prox_body *lat, const prox_body *rim, const prox_fcircle rr[2],
+                    const dp_band gr[2], double tol)
 {
     if (sup_ridge_shadow_lb(lat, rim, s->delta) > s->best + tol) return 1;
     prox_vec3 w = lat->cyl.w;
     int need[2];
-    for (int i = 0; i < 2; ++i) need[i] = !(dp_ridge_lb(&gr[i], lat) > s->best + tol || !dp_reach(&gr[i], lat, 0, s->best, tol));
+    for (int i = 0; i < 2; ++i)
+        need[i] = !(dp_ridge_lb(&gr[i], lat) > s->best + tol || !dp_reach(&gr[i], lat, 0, s->best, tol));
     if (!need[0] && !need[1]) return 1;
     /* the whole ridge in its plane (rcc_ridge_shadow.c: its minimiser is among the candidates); the
      * rims' quartics when it is degenerate */
@@ -203,12 +206,13 @@ static double dp_lune_max(prox_vec3 v, prox_vec3 al, prox_vec3 be, prox_vec3 x, 
 }
 
 /* Lower bound of phi over the directions of the cell of A's rim ca (end ea) and B's rim cb (end eb).
- * There A's support lies on rim ea and B's (in -D) on rim eb, so D lies in the lune D.al >= 0, D.be
- * >= 0 (al = ea wA, be = -eb wB) and phi(D) = rA g(D.al) + rB g(D.be) - D.m, g(t) = sqrt(1 - t^2),
- * m = cb.c - ca.c (the end terms hh|D.w| join Delta into the rim centres). Over the lune D.al and
- * D.be range over [0, top], top = 1 when al.be >= 0 (al lies in the lune) and |P_be al| = sqrt(1 -
- * (al.be)^2) otherwise (1 again for a lune too thin to take its width from rounded cosines). g is concave there, so it is at least the smaller of its chords over [0, k top]
- * and [k top, top] (k = 3/4); each choice of chords for the two terms makes phi >= c0 - D.v with v =
+ * There A's support lies on rim ea and B's (in -D) on rim eb, so D lies in the lune D.al >= 0,
+ * D.be >= 0 (al = ea wA, be = -eb wB) and phi(D) = rA g(D.al) + rB g(D.be) - D.m, g(t) = sqrt(1 -
+ * t^2), m = cb.c - ca.c (the end terms hh|D.w| join Delta into the rim centres). Over the lune D.al
+ * and D.be range over [0, top], top = 1 when al.be >= 0 (al lies in the lune) and |P_be al| =
+ * sqrt(1 - (al.be)^2) otherwise (1 again for a lune too thin to take its width from rounded
+ * cosines). g is concave there, so it is at least the smaller of its chords over [0, k top] and
+ * [k top, top] (k = 3/4); each choice of chords for the two terms makes phi >= c0 - D.v with v =
  * m - rA s_a al - rB s_b be (s the chords' slopes), whose minimum over the lune is c0 minus
  * dp_lune_max. The bound is the least of the four. Rounding (a few eps (|m| + rA + rB)) stays far
  * below the PROX_TOL_SEARCH x S margin of the cut it is compared with. */
@@ -284,6 +288,8 @@ static int dp_cells_far(dp_state *s, const prox_fcircle *a, const prox_fcircle *
     return 1;
 }
 
+enum { DP_NROOT = 4 }; /* stationary points a cell's scan may hand to the local solve */
+
 /* One cell's parametrised rim x(theta) (circle P of body kp at end ep) against rim Q of body kq at
  * end eq, for the certified exclusion below, with the per-cell coefficients of its conditions as
  * trigonometric polynomials of theta (dp_cell_prep): x - c_Q = d0 + r_P (c u + s v), its offset
@@ -295,6 +301,8 @@ typedef struct dp_cell {
     double a1; /* amplitude r_P |wq x n_P| of f[1], a trigonometric polynomial of degree 1 */
     int budget; /* evaluations left before the scan gives up (the cell is then solved) */
     int far;    /* q is the farthest point of rim Q from x (dp_cells_far), not the closest */
+    int nroot;  /* intervals holding exactly one stationary point (dp_cell_span), solved locally */
+    double root[DP_NROOT][2];
     prox_vec3 r0, ru, rv;           /* rad = r0 + c ru + s rv */
     double z0, zu, zv;              /* f[1] = ezq.(x - c_Q) = z0 + c zu + s zv */
     double e0, e0r, eur, evr;       /* ezp.(c_Q - c_P), and ezp.rad = e0r + c eur + s evr */
@@ -389,6 +397,23 @@ static int dp_cell_span(dp_cell *g, double t0, const double *f0, double t1, cons
         /* stationarity f[5] = 0: excluded when f[5] keeps one sign with |f[5]| above its drift */
         double dhi = 0.5 * (f0[2] + f1[2] + L) + g->cut;
         if (f0[5] * f1[5] > 0.0 && 0.5 * (fabs(f0[5]) + fabs(f1[5]) - L - Lq - dhi * w) > g->tol) return 0;
+        /* f[5] = (q - x).t_P has f5'' = q''.t_P - 2 q'.u_P - f5, so |f5''| <= M = r_Q r_P / rho_lo (3 + 3
+         * r_P / rho_lo) + dhi (the bounds of |q''| and |q'| above, |f5| <= |q - x|). By the mean value
+         * theorem f5' = (f5(t1) - f5(t0)) / w somewhere on the interval, so |f5(t1) - f5(t0)| > M w^2
+         * keeps f5' from vanishing there: f5 is strictly monotone, and the interval holds no stationary
+         * point when both ends have one sign, else exactly one, which the local solve finds
+         * (dp_cell_roots) in place of the degree-8 polynomial */
+        if (!g->far) {
+            double m = g->q->r * g->p->r * irho * (3.0 + 3.0 * g->p->r * irho) + dhi;
+            if (fabs(f1[5] - f0[5]) > m * w * w + 2.0 * g->tol) {
+                if (f0[5] * f1[5] > 0.0 && fabs(f0[5]) > g->tol && fabs(f1[5]) > g->tol) return 0;
+                if (g->nroot < DP_NROOT) {
+                    g->root[g->nroot][0] = t0, g->root[g->nroot][1] = t1;
+                    ++g->nroot;
+                    return 0;
+                }
+            }
+        }
     }
     if (depth == 0 || g->budget <= 0) return 1;
     /* the middle angle's cos and sin: the normalised sum of the ends' (no trigonometric call; the
@@ -399,9 +424,60 @@ static int dp_cell_span(dp_cell *g, double t0, const double *f0, double t1, cons
     return dp_cell_span(g, t0, f0, tm, fm, depth - 1) || dp_cell_span(g, tm, fm, t1, f1, depth - 1);
 }
 
-/* Certified exclusion of a cell before its degree-8 solve. At a cell minimiser with value <= cut,
- * p1 on A's rim, p2 on B's, p1 - p2 = phi D, D in A's normal cone at p1 and -D in B's at p2 (the
- * cones of a rim point: alpha e w + beta u, alpha, beta >= 0, u radial). Let x be the point whose
+/* f[5] at the angle th. */
+static double dp_cell_f5(dp_cell *g, double th)
+{
+    double f[DP_NVAL];
+    dp_cell_vals(g, cos(th), sin(th), f);
+    return f[5];
+}
+
+/* The stationary point in [a, b], where f[5] is strictly monotone (dp_cell_span): regula falsi with
+ * the Illinois halving, bisection when a secant step leaves the bracket, to the bracket's rounding.
+ * Ends of one sign (a root within tol of an end, or beyond it) give the end nearer to zero. */
+static double dp_cell_root(dp_cell *g, double a, double b)
+{
+    double fa = dp_cell_f5(g, a), fb = dp_cell_f5(g, b);
+    if (fa == 0.0) return a;
+    if (fb == 0.0 || fa * fb > 0.0) return fabs(fb) <= fabs(fa) ? b : a;
+    int side = 0;
+    for (int it = 0; it < 64 && b - a > 4.0 * DBL_EPSILON * (fabs(a) + fabs(b)); ++it) {
+        double x = (a * fb - b * fa) / (fb - fa);
+        if (!(x > a && x < b)) x = 0.5 * (a + b);
+        double fx = dp_cell_f5(g, x);
+        if (fx == 0.0) return x;
+        if (fx * fb > 0.0) {
+            b = x, fb = fx;
+            if (side == 1) fa *= 0.5;
+            side = 1;
+        } else {
+            a = x, fa = fx;
+            if (side == -1) fb *= 0.5;
+            side = -1;
+        }
+    }
+    return fabs(fa) <= fabs(fb) ? a : b;
+}
+
+/* The candidates of the stationary points dp_cell_span located: as dp_cells_closest does for the
+ * polynomial's roots. 0 when a partner is degenerate (x on rim Q's axis: the caller solves). */
+static int dp_cell_roots(dp_state *s, dp_cell *g)
+{
+    for (int i = 0; i < g->nroot; ++i) {
+        int deg = 0;
+        prox_vec3 pa = prox_fcircle_point(g->p, dp_cell_root(g, g->root[i][0], g->root[i][1]));
+        prox_vec3 pb = prox_fcircle_closest(g->q, pa, &deg);
+        if (deg) return 0;
+        dp_consider_pm(s, prox_v3_sub(pa, pb));
+        dp_consider_pm(s, prox_v3_cross(dp_tangent(g->p, pa), dp_tangent(g->q, pb)));
+    }
+    return 1;
+}
+
+/* Certified exclusion of a cell, or the location of its minimisers, before its degree-8 solve. At a
+ * cell minimiser with value <= cut, p1 on A's rim, p2 on B's, p1 - p2 = phi D, D in A's normal
+ * cone at p1 and -D in B's at p2 (the cones of a rim point: alpha e w + beta u, alpha, beta >= 0, u
+ * radial). Let x be the point whose
  * partner q on the other rim Q is its closest point: x - q = dn e_Q w_Q + (rho_Q(x) - r_Q) u_Q(q), and
  * x - q (= p1 - p2 when q = p2, = p2 - p1 when q = p1) lies in minus Q's normal cone at q and in P's
  * normal cone at x. Hence dn <= 0 (x on the body side of Q's end plane), rho_Q(x) <= r_Q (x within
@@ -409,10 +485,12 @@ static int dp_cell_span(dp_cell *g, double t0, const double *f0, double t1, cons
  * (q - x).u_P(x) <= 0. With far, q is the farthest point of Q from x: x - q = dn e_Q w_Q - (rho_Q(x)
  * + r_Q) u_Q(q) meets the same cones with the radial condition always true, and the other four
  * conditions stand. Returns 0 when a grid of the angle of x with the Lipschitz bounds of
- * dp_cell_span proves that no point of rim P meets them all: the cell holds no minimiser at or below
- * cut. */
-static int dp_cell_may(const prox_fcircle *p, const prox_body *kp, int ep, const prox_fcircle *q, const prox_body *kq,
-                       int eq, double cut, double tol, int far)
+ * dp_cell_span proves that no point of rim P meets them all but in intervals where the stationarity
+ * is strictly monotone: the cell then holds no minimiser at or below cut but the stationary points of
+ * those intervals, which are solved there and added to st (dp_cell_roots). Returns 1 when the cell
+ * needs its degree-8 solve. */
+static int dp_cell_may(dp_state *st, const prox_fcircle *p, const prox_body *kp, int ep, const prox_fcircle *q,
+                       const prox_body *kq, int eq, double cut, double tol, int far)
 {
     enum { N = 8, DEPTH = 12, BUDGET = 256 };
     dp_cell g = {.p = p,
@@ -440,7 +518,7 @@ static int dp_cell_may(const prox_fcircle *p, const prox_body *kp, int ep, const
         if (dp_cell_span(&g, (k - 1) * (2.0 * PROX_PI / N), fa, k * (2.0 * PROX_PI / N), fb, DEPTH)) return 1;
         fa = fb;
     }
-    return 0;
+    return g.nroot > 0 && !dp_cell_roots(st, &g);
 }
 
 int sup_rcc_depth_enum(const prox_body *a, const prox_body *b, prox_signed_result *res)
@@ -455,7 +533,8 @@ int sup_rcc_depth_enum(const prox_body *a, const prox_body *b, prox_signed_resul
     dp_consider_pm(&s, prox_v3_cross(a->cyl.w, b->cyl.w));
     /* ridges */
     prox_fcircle ra[2] = {dp_rim(a, -1), dp_rim(a, 1)}, rb[2] = {dp_rim(b, -1), dp_rim(b, 1)}; /* bottom, top */
-    dp_band ga[2] = {dp_band_of(&ra[0], b), dp_band_of(&ra[1], b)}, gb[2] = {dp_band_of(&rb[0], a), dp_band_of(&rb[1], a)};
+    dp_band ga[2] = {dp_band_of(&ra[0], b), dp_band_of(&ra[1], b)};
+    dp_band gb[2] = {dp_band_of(&rb[0], a), dp_band_of(&rb[1], a)};
     ok = dp_ridge(&s, a, b, rb, gb, PROX_TOL_SEARCH * scale) && ok;
     ok = dp_ridge(&s, b, a, ra, ga, PROX_TOL_SEARCH * scale) && ok;
     /* cells: rim of A at end ea against rim of B at end eb, the lowest bound first (a deep overlap's
@@ -479,21 +558,23 @@ int sup_rcc_depth_enum(const prox_body *a, const prox_body *b, prox_signed_resul
         if (lb > cut) continue;
         /* A's point on rim ea, B's on rim eb: each must reach the other's corner band */
         double tol = PROX_TOL_SEARCH * scale;
-        if (!dp_reach(&gb[(eb + 1) / 2], a, ea, s.best, tol) || !dp_reach(&ga[(ea + 1) / 2], b, eb, s.best, tol)) continue;
-        if (sup_rim_lune_lb(&ca, prox_v3_scale(a->cyl.w, (double)ea), &cb, prox_v3_scale(b->cyl.w, (double)-eb)) > cut) continue;
+        if (!dp_reach(&gb[(eb + 1) / 2], a, ea, s.best, tol) || !dp_reach(&ga[(ea + 1) / 2], b, eb, s.best, tol))
+            continue;
+        prox_vec3 al = prox_v3_scale(a->cyl.w, (double)ea), be = prox_v3_scale(b->cyl.w, (double)-eb);
+        if (sup_rim_lune_lb(&ca, al, &cb, be) > cut) continue;
         /* pairs with p2 closest on B's rim to p1: stationary points on A's rim (one degree-8
          * solve); with p1 closest on A's rim: on B's rim. The rest has p1 farthest (>= far_a)
          * or p2 farthest (>= far_b): one solve suffices when either bound exceeds the best;
          * else two, the closest and the farthest partners of A's rim points. */
         if (far_a > cut && !(far_b > cut && ca.r > cb.r)) { /* both serve: the larger rim scanned */
-            if (!dp_cell_may(&cb, b, eb, &ca, a, ea, cut, tol, 0)) continue;
+            if (!dp_cell_may(&s, &cb, b, eb, &ca, a, ea, cut, tol, 0)) continue;
             ok = dp_cells_closest(&s, &cb, &ca);
         } else if (far_b > cut) {
-            if (!dp_cell_may(&ca, a, ea, &cb, b, eb, cut, tol, 0)) continue;
+            if (!dp_cell_may(&s, &ca, a, ea, &cb, b, eb, cut, tol, 0)) continue;
             ok = dp_cells_closest(&s, &ca, &cb);
         } else { /* a deep overlap: both kinds of partner on B's rim; the far ones after every
                   * other cell, whose values may by then exclude them (far_b > cut) */
-            ok = dp_cell_may(&ca, a, ea, &cb, b, eb, cut, tol, 0) ? dp_cells_closest(&s, &ca, &cb) : 1;
+            ok = dp_cell_may(&s, &ca, a, ea, &cb, b, eb, cut, tol, 0) ? dp_cells_closest(&s, &ca, &cb) : 1;
             deferred[nd++] = k;
         }
         if (ok < 0) return ok; /* a circle solver failed: PROX_ENUMERIC for the caller */
@@ -503,7 +584,7 @@ int sup_rcc_depth_enum(const prox_body *a, const prox_body *b, prox_signed_resul
         double cut = s.best + PROX_TOL_SEARCH * scale;
         int ea = k & 1 ? 1 : -1, eb = k & 2 ? 1 : -1;
         if (lbs[k] > cut || fars[k][1] > cut) continue;
-        if (!dp_cell_may(&rims[k][0], a, ea, &rims[k][1], b, eb, cut, PROX_TOL_SEARCH * scale, 1)) continue;
+        if (!dp_cell_may(&s, &rims[k][0], a, ea, &rims[k][1], b, eb, cut, PROX_TOL_SEARCH * scale, 1)) continue;
         ok = dp_cells_far(&s, &rims[k][0], &rims[k][1]);
         if (ok < 0) return ok;
     }
