@@ -27,6 +27,30 @@ static double phi(const prox_body *a, const prox_body *b, prox_vec3 d)
     return prox_cyl_hc(&a->cyl, d) + prox_cyl_hc(&b->cyl, d) - prox_v3_dot(d, prox_v3_sub(b->c, a->c));
 }
 
+/* Pair i of a family: random axes; with family >= 1 every tenth pair parallel or antiparallel, with
+ * family 2 also every tenth from the fifth perpendicular (a needle shadow); A at the origin, B up to
+ * 14 away. */
+static void random_pair(test_rng *g, int i, int family, prox_body *a, prox_body *b)
+{
+    prox_vec3 wa = test_unit(g), wb = test_unit(g);
+    if (family >= 1 && i % 10 == 0) wb = i % 20 == 0 ? wa : prox_v3_neg(wa);
+    if (family == 2 && i % 10 == 5) wb = prox_v3_any_perp(wa);
+    *a = random_cyl(g, prox_v3(0, 0, 0), wa);
+    *b = random_cyl(g, prox_v3_scale(test_unit(g), test_range(g, 0.0, 14.0)), wb);
+}
+
+/* Cell k (A's rim at end +-1 by bit 0, B's by bit 1): the rims in absolute coordinates and the
+ * lune's normals al = e_A w_A, be = -e_B w_B. */
+static void cell_of(const prox_body *a, const prox_body *b, int k, prox_fcircle *ca, prox_fcircle *cb, prox_vec3 *al,
+                    prox_vec3 *be)
+{
+    int ea = k & 1 ? 1 : -1, eb = k & 2 ? 1 : -1;
+    *ca = prox_cyl_rim(&a->cyl, ea > 0), *cb = prox_cyl_rim(&b->cyl, eb > 0);
+    ca->c = prox_v3_add(ca->c, a->c);
+    cb->c = prox_v3_add(cb->c, b->c);
+    *al = prox_v3_scale(a->cyl.w, (double)ea), *be = prox_v3_scale(b->cyl.w, (double)-eb);
+}
+
 /* The least phi found over the lune: random directions folded into it, the arcs D.al = 0 and
  * D.be = 0 and their ends. */
 static double lune_min(test_rng *g, const prox_body *a, const prox_body *b, prox_vec3 al, prox_vec3 be)
@@ -60,17 +84,13 @@ static void test_bound_below_phi(void **state)
     int cells = 0, tight = 0;
     double worst = -INFINITY;
     for (int i = 0; i < 300; ++i) {
-        prox_vec3 wa = test_unit(&g), wb = test_unit(&g);
-        if (i % 10 == 0) wb = i % 20 == 0 ? wa : prox_v3_neg(wa); /* parallel and antiparallel axes */
-        prox_body a = random_cyl(&g, prox_v3(0, 0, 0), wa);
-        prox_body b = random_cyl(&g, prox_v3_scale(test_unit(&g), test_range(&g, 0.0, 14.0)), wb);
+        prox_body a, b;
+        random_pair(&g, i, 1, &a, &b);
         double S = fmax(prox_v3_dist(a.c, b.c), fmax(a.size, b.size));
         for (int k = 0; k < 4; ++k) {
-            int ea = k & 1 ? 1 : -1, eb = k & 2 ? 1 : -1;
-            prox_fcircle ca = prox_cyl_rim(&a.cyl, ea > 0), cb = prox_cyl_rim(&b.cyl, eb > 0);
-            ca.c = prox_v3_add(ca.c, a.c);
-            cb.c = prox_v3_add(cb.c, b.c);
-            prox_vec3 al = prox_v3_scale(wa, (double)ea), be = prox_v3_scale(wb, (double)-eb);
+            prox_fcircle ca, cb;
+            prox_vec3 al, be;
+            cell_of(&a, &b, k, &ca, &cb, &al, &be);
             double lb = sup_rim_lune_lb(&ca, al, &cb, be), m = lune_min(&g, &a, &b, al, be);
             if (m == INFINITY) continue; /* an empty lune: no direction to bound */
             ++cells;
@@ -104,11 +124,8 @@ static void test_ridge_bound_below_phi(void **state)
     int ridges = 0, tight = 0;
     double worst = -INFINITY;
     for (int i = 0; i < 300; ++i) {
-        prox_vec3 wa = test_unit(&g), wb = test_unit(&g);
-        if (i % 10 == 0) wb = i % 20 == 0 ? wa : prox_v3_neg(wa); /* parallel and antiparallel axes */
-        if (i % 10 == 5) wb = prox_v3_any_perp(wa);               /* a needle shadow */
-        prox_body a = random_cyl(&g, prox_v3(0, 0, 0), wa);
-        prox_body b = random_cyl(&g, prox_v3_scale(test_unit(&g), test_range(&g, 0.0, 14.0)), wb);
+        prox_body a, b;
+        random_pair(&g, i, 2, &a, &b);
         double S = fmax(prox_v3_dist(a.c, b.c), fmax(a.size, b.size));
         prox_vec3 delta = prox_v3_sub(b.c, a.c);
         for (int k = 0; k < 2; ++k) {
@@ -133,19 +150,16 @@ static void test_bound_skips_cells(void **state)
     test_rng g = test_rng_seed(2030);
     int cells = 0, skipped = 0;
     for (int i = 0; i < 2000; ++i) {
-        prox_vec3 wa = test_unit(&g), wb = test_unit(&g);
-        prox_body a = random_cyl(&g, prox_v3(0, 0, 0), wa);
-        prox_body b = random_cyl(&g, prox_v3_scale(test_unit(&g), test_range(&g, 0.0, 14.0)), wb);
+        prox_body a, b;
+        random_pair(&g, i, 0, &a, &b);
         prox_signed_result r = {0};
         if (sup_rcc_depth_enum(&a, &b, &r) != 1) continue; /* disjoint, touching or undecided */
         for (int k = 0; k < 4; ++k) {
-            int ea = k & 1 ? 1 : -1, eb = k & 2 ? 1 : -1;
-            prox_fcircle ca = prox_cyl_rim(&a.cyl, ea > 0), cb = prox_cyl_rim(&b.cyl, eb > 0);
-            ca.c = prox_v3_add(ca.c, a.c);
-            cb.c = prox_v3_add(cb.c, b.c);
-            double lb = sup_rim_lune_lb(&ca, prox_v3_scale(wa, (double)ea), &cb, prox_v3_scale(wb, (double)-eb));
+            prox_fcircle ca, cb;
+            prox_vec3 al, be;
+            cell_of(&a, &b, k, &ca, &cb, &al, &be);
             ++cells;
-            skipped += lb > -r.sd;
+            skipped += sup_rim_lune_lb(&ca, al, &cb, be) > -r.sd;
         }
     }
     print_message("# overlapping pairs: the bound exceeds the depth on %d of %d cells\n", skipped, cells);
