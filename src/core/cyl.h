@@ -101,6 +101,16 @@ static inline int prox_cyl_contains(const prox_cyl *k, prox_vec3 x, double tol)
     return prox_v3_norm2(prox_v3_mad(d, -t, k->w)) <= rt * rt;
 }
 
+/* 1 when x lies in the closed solid cylinder of a card c (x and c->base in the same frame): the
+ * squared tests on the card itself, no root and no prepared cylinder (prox_rcc_contains_point builds
+ * one), for a quick routing test on a query's hot path. */
+static inline int prox_rcc_holds(const prox_rcc *c, prox_vec3 x)
+{
+    prox_vec3 d = prox_v3_sub(x, c->base);
+    double t = prox_v3_dot(d, c->axis), hh = prox_v3_norm2(c->axis);
+    return t >= 0.0 && t <= hh && prox_v3_norm2(d) * hh - t * t <= c->radius * c->radius * hh;
+}
+
 /* Closest point of the solid cylinder to x (x itself when inside). */
 prox_vec3 prox_cyl_closest(const prox_cyl *k, prox_vec3 x);
 

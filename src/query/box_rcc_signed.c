@@ -3,6 +3,7 @@
  * modules, hence lives here and not in either of them. */
 #include "core/body.h"
 #include "core/box.h"
+#include "core/cyl.h"
 #include "prox/pairs.h"
 #include "prox/support.h"
 #include "query/query_internal.h"
@@ -44,14 +45,6 @@ static int box_holds(const prox_box *a, prox_vec3 x)
     return 1;
 }
 
-/* 1 when x lies in the closed cylinder b. */
-static int rcc_holds(const prox_rcc *b, prox_vec3 x)
-{
-    prox_vec3 d = prox_v3_sub(x, b->base);
-    double t = prox_v3_dot(d, b->axis), hh = prox_v3_norm2(b->axis);
-    return t >= 0.0 && t <= hh && prox_v3_norm2(d) * hh - t * t <= b->radius * b->radius * hh;
-}
-
 /* 1 when the pair shares an evident point: a centre of one in the other, or the midpoint of the
  * centres in both. Such a pair overlaps (or touches) and goes straight to the depth, which validates
  * it (so does the distance otherwise: bad input gets its status either way). */
@@ -60,7 +53,7 @@ static int evident_common(const prox_box *a, const prox_rcc *b)
     if (!a || !b) return 0; /* the solvers report it */
     prox_vec3 ca = prox_v3_mad(a->corner, 0.5, prox_v3_add(a->edge[0], prox_v3_add(a->edge[1], a->edge[2])));
     prox_vec3 cb = prox_v3_mad(b->base, 0.5, b->axis), mid = prox_v3_scale(prox_v3_add(ca, cb), 0.5);
-    return rcc_holds(b, ca) || box_holds(a, cb) || (box_holds(a, mid) && rcc_holds(b, mid));
+    return prox_rcc_holds(b, ca) || box_holds(a, cb) || (box_holds(a, mid) && prox_rcc_holds(b, mid));
 }
 
 static prox_signed_result box_rcc_signed(const prox_box *a, const prox_rcc *b, int *bounded)

@@ -6,6 +6,7 @@
 #include "prox/distance.h"
 #include "prox/sat.h"
 #include "core/body.h"
+#include "core/cyl.h"
 #include "sat/sat_internal.h"
 
 /* Polishes a disjoint pair's witnesses p1 in A, p2 in B whose separation differs from the certified
@@ -48,14 +49,6 @@ PROX_API prox_signed_result prox_rcc_signed_distance(const prox_rcc *a, const pr
     return r;
 }
 
-/* 1 when x (relative to the point o) lies in the closed cylinder k: the squared tests, no root. */
-static int rcc_holds(const prox_rcc *k, prox_vec3 o, prox_vec3 x)
-{
-    prox_vec3 d = prox_v3_sub(x, prox_v3_sub(k->base, o));
-    double t = prox_v3_dot(d, k->axis), hh = prox_v3_norm2(k->axis);
-    return t >= 0.0 && t <= hh && prox_v3_norm2(d) * hh - t * t <= k->radius * k->radius * hh;
-}
-
 /* 1 when the pair shares an evident point: a centre of one cylinder in the other, or the midpoint of
  * the centres in both (relative to A's base, as the solvers take the pair). Two thirds of the
  * overlapping pairs of the bench's mix are found so and go straight to the depth, which validates
@@ -63,9 +56,12 @@ static int rcc_holds(const prox_rcc *k, prox_vec3 o, prox_vec3 x)
 static int evident_common(const prox_rcc *a, const prox_rcc *b)
 {
     if (!a || !b) return 0; /* the solvers report it */
-    prox_vec3 o = a->base, ca = prox_v3_scale(a->axis, 0.5), cb = prox_v3_mad(prox_v3_sub(b->base, o), 0.5, b->axis);
+    prox_rcc ra = *a, rb = *b;
+    ra.base = prox_v3(0, 0, 0);
+    rb.base = prox_v3_sub(b->base, a->base);
+    prox_vec3 ca = prox_v3_scale(ra.axis, 0.5), cb = prox_v3_mad(rb.base, 0.5, rb.axis);
     prox_vec3 mid = prox_v3_scale(prox_v3_add(ca, cb), 0.5);
-    return rcc_holds(b, o, ca) || rcc_holds(a, o, cb) || (rcc_holds(a, o, mid) && rcc_holds(b, o, mid));
+    return prox_rcc_holds(&rb, ca) || prox_rcc_holds(&ra, cb) || (prox_rcc_holds(&ra, mid) && prox_rcc_holds(&rb, mid));
 }
 
 static prox_signed_result rcc_signed(const prox_rcc *a, const prox_rcc *b, int *bounded)

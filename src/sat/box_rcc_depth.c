@@ -321,18 +321,13 @@ unsigned long long prox_sat_box_depth_fallbacks(void)
 static void bd_bodies(const prox_box *a, const prox_rcc *b, prox_body *ba, prox_body *bb, prox_vec3 *o, double *f)
 {
     ba->kind = PROX_BODY_BOX;
-    ba->cyl = (prox_cyl){0}, bb->box = (prox_bframe){0}, ba->r = bb->r = 0.0; /* the other kinds' parts */
+    ba->cyl = (prox_cyl){0}, ba->r = 0.0; /* the other kinds' parts (prox_body_make_cyl clears B's) */
     ba->box = prox_bframe_make(a);
     *o = ba->box.m;
     ba->box.m = prox_v3(0, 0, 0);
     ba->size = prox_bframe_size(&ba->box);
-    bb->kind = PROX_BODY_CYL;
-    bb->cyl = prox_cyl_make(b, prox_v3(0, 0, 0)); /* centred: caps at -+hh w (core/body.c) */
-    bb->cyl.c = prox_v3(0, 0, 0);
-    bb->cyl.cap[0] = bb->cyl.b = prox_v3_scale(bb->cyl.w, -bb->cyl.hh);
-    bb->cyl.cap[1] = prox_v3_scale(bb->cyl.w, bb->cyl.hh);
-    bb->size = bb->cyl.h > 2.0 * bb->cyl.r ? bb->cyl.h : 2.0 * bb->cyl.r;
-    bb->c = prox_v3_sub(prox_rcc_center(b), *o);
+    prox_body_make_cyl(b, bb);
+    bb->c = prox_v3_sub(bb->c, *o);
     double S = prox_v3_norm(bb->c);
     S = ba->size > S ? ba->size : S;
     S = bb->size > S ? bb->size : S;

@@ -181,29 +181,44 @@ int sup_ellipse_feet(double a, double b, double y0, double y1, prox_vec3 e1, pro
     return ellipse_feet(a, b, y0, y1, e1, e2, out, n, max, 0);
 }
 
+/* The shadow of cylinder oth on the plane of lat's ridge (file comment): E's semi-axes a along e1 and
+ * b along e2 (b = a for parallel axes, where E is the disk's own circle), the half axis's component
+ * d2 along e2, and delta's coordinates (p0, p1). */
+typedef struct rs_shadow {
+    prox_vec3 e1, e2;
+    double a, b, d2, p0, p1;
+} rs_shadow;
+
+static rs_shadow rs_shadow_of(const prox_body *lat, const prox_body *oth, prox_vec3 delta)
+{
+    rs_shadow S;
+    prox_vec3 w = lat->cyl.w, wo = oth->cyl.w, x = prox_v3_cross(w, wo);
+    double xn = prox_v3_norm(x);
+    S.a = oth->cyl.r;
+    S.b = oth->cyl.r * fabs(prox_v3_dot(w, wo));
+    S.e1 = xn > PROX_TOL_PARALLEL ? prox_v3_scale(x, 1.0 / xn) : prox_v3_any_perp(w);
+    S.e2 = prox_v3_cross(w, S.e1);
+    if (!(xn > PROX_TOL_PARALLEL)) S.b = S.a;
+    S.d2 = oth->cyl.hh * prox_v3_dot(wo, S.e2);
+    S.p0 = prox_v3_dot(delta, S.e1), S.p1 = prox_v3_dot(delta, S.e2);
+    return S;
+}
+
 /* The ridge's candidates (sup_ridge_shadow, sat_internal.h's sup_ridge_shadow_min when `minimum`). */
 static int ridge_shadow(const prox_body *lat, const prox_body *oth, prox_vec3 delta, prox_vec3 *out, int max,
                         int minimum)
 {
-    prox_vec3 w = lat->cyl.w, wo = oth->cyl.w;
-    double cw = fabs(prox_v3_dot(w, wo));
-    prox_vec3 x = prox_v3_cross(w, wo);
-    double xn = prox_v3_norm(x);
-    double a = oth->cyl.r, b = oth->cyl.r * cw;
+    rs_shadow S = rs_shadow_of(lat, oth, delta);
     /* the other axis nearly in the ridge plane: E is a needle (its tips curve at b^2 / a), the
      * general path (rims' quartics) decides */
-    if (!(b > PROX_TOL_RIDGE_THIN * a)) return -1;
-    prox_vec3 e1 = xn > PROX_TOL_PARALLEL ? prox_v3_scale(x, 1.0 / xn) : prox_v3_any_perp(w);
-    prox_vec3 e2 = prox_v3_cross(w, e1);
-    if (!(xn > PROX_TOL_PARALLEL)) b = a; /* parallel axes: E is the disk's own circle */
-    double d2 = oth->cyl.hh * prox_v3_dot(wo, e2), p0 = prox_v3_dot(delta, e1), p1 = prox_v3_dot(delta, e2);
+    if (!(S.b > PROX_TOL_RIDGE_THIN * S.a)) return -1;
     int n = 0;
-    rs_push(out, &n, max, e1, e2, 1.0, 0.0); /* the ends of the halves: both lateral lines */
+    rs_push(out, &n, max, S.e1, S.e2, 1.0, 0.0); /* the ends of the halves: both lateral lines */
     /* the half of p = delta + h d is D.d <= 0 for h = +1, D.d >= 0 for h = -1: side -h sign(d2) of e2;
      * with d2 = 0 both halves are one function on the whole circle */
     for (int h = -1; h <= 1; h += 2) {
-        int side = !minimum ? 0 : d2 == 0.0 ? 2 : (h * d2 > 0.0 ? -1 : 1);
-        if (ellipse_feet(a, b, p0, p1 + h * d2, e1, e2, out, &n, max, side) < 0) return -1;
+        int side = !minimum ? 0 : S.d2 == 0.0 ? 2 : (h * S.d2 > 0.0 ? -1 : 1);
+        if (ellipse_feet(S.a, S.b, S.p0, S.p1 + h * S.d2, S.e1, S.e2, out, &n, max, side) < 0) return -1;
         if (side == 2) break;
     }
     return n;
@@ -219,21 +234,18 @@ int sup_ridge_shadow_min(const prox_body *lat, const prox_body *oth, prox_vec3 d
     return ridge_shadow(lat, oth, delta, out, max, 1);
 }
 
-/* Lower bound of phi over the ridge D.w = 0 of cylinder `lat` (radius r): r minus an upper bound of
- * the distance from delta's shadow to Q = E + [-d, d] (the minimum is r minus that distance, or plus
- * delta's depth in Q). E + t d lies in Q for |t| <= 1, so the distance is at most that from
- * y = delta - t d, t the point of [-1, 1] nearest to delta along d, to E along the ray from E's
- * centre: |y| (1 - 1 / k), k = |(y0 / a, y1 / b)|, when k > 1, else 0. Parallel axes (no frame) take
- * the disk of radius b inside Q: at most |delta| - b. */
+/* Lower bound of phi over the ridge D.w = 0 of cylinder `lat` (radius r): its minimum is r minus the
+ * distance from delta's shadow to Q = E + [-d, d], or plus delta's depth in Q. Two bounds, the larger
+ * taken: E holds the disk of radius b about Q's centre, so h_Q >= b and phi >= r + b - |delta|; and
+ * E + t d lies in Q for |t| <= 1, so the distance is at most that from y = delta - t d, t the point
+ * of [-1, 1] nearest to delta along d, to E along the ray from E's centre: |y| (1 - 1 / k),
+ * k = |(y0 / a, y1 / b)|, when k > 1, else 0. */
 double sup_ridge_shadow_lb(const struct prox_body *lat, const struct prox_body *oth, prox_vec3 delta)
 {
-    prox_vec3 w = lat->cyl.w, x = prox_v3_cross(w, oth->cyl.w);
-    double a = oth->cyl.r, b = a * fabs(prox_v3_dot(w, oth->cyl.w)), xn = prox_v3_norm(x);
-    if (!(xn > PROX_TOL_PARALLEL) || !(b > 0.0)) return lat->cyl.r + b - prox_v3_norm(prox_v3_reject(delta, w));
-    prox_vec3 e1 = prox_v3_scale(x, 1.0 / xn), e2 = prox_v3_cross(w, e1);
-    double d2 = oth->cyl.hh * prox_v3_dot(oth->cyl.w, e2), y0 = prox_v3_dot(delta, e1), y1 = prox_v3_dot(delta, e2);
-    double t = d2 != 0.0 ? fmax(-1.0, fmin(1.0, y1 / d2)) : 0.0;
-    y1 -= t * d2;
-    double k = prox_hypot2(y0 / a, y1 / b);
-    return k <= 1.0 ? lat->cyl.r : lat->cyl.r - prox_hypot2(y0, y1) * (1.0 - 1.0 / k);
+    rs_shadow S = rs_shadow_of(lat, oth, delta);
+    double r = lat->cyl.r, disk = r + S.b - prox_hypot2(S.p0, S.p1);
+    if (!(S.b > 0.0)) return disk;
+    double t = S.d2 != 0.0 ? fmax(-1.0, fmin(1.0, S.p1 / S.d2)) : 0.0;
+    double y0 = S.p0, y1 = S.p1 - t * S.d2, k = prox_hypot2(y0 / S.a, y1 / S.b);
+    return fmax(disk, k <= 1.0 ? r : r - prox_hypot2(y0, y1) * (1.0 - 1.0 / k));
 }
